@@ -1,0 +1,82 @@
+/**
+ * @file grid.h
+ * @brief The background grid: a regular array of rectangular cells whose
+ *        nodes carry the nodal masses, momenta and forces of one time step.
+ *
+ * A node owns one *slot* (its field 0).  Stages that give nodes more than one
+ * velocity field append extra slots after the first @c nnodes; @c slot_node
+ * says to which node each extra slot belongs.  Conventional MPM uses only the
+ * first @c nnodes slots.
+ */
+#ifndef MPM_GRID_H
+#define MPM_GRID_H
+
+/** Bit set in Grid::fixed when a node's x velocity is held at zero. */
+#define GRID_FIX_X 1u
+/** Bit set in Grid::fixed when a node's y velocity is held at zero. */
+#define GRID_FIX_Y 2u
+
+/** Regular background grid and its nodal data (structure of arrays). */
+typedef struct Grid {
+    double ox;        /**< x of the lower-left grid corner */
+    double oy;        /**< y of the lower-left grid corner */
+    double dx;        /**< cell width */
+    double dy;        /**< cell height */
+    double idx;       /**< 1 / dx */
+    double idy;       /**< 1 / dy */
+    int ncx;          /**< cells along x */
+    int ncy;          /**< cells along y */
+    int nnx;          /**< nodes along x (ncx + 1) */
+    int nny;          /**< nodes along y (ncy + 1) */
+    int nnodes;       /**< nnx * nny */
+    int nslots;       /**< slots in use: nnodes plus extra field slots */
+    int capacity;     /**< slots allocated */
+    int *slot_node;   /**< node of extra slot s is slot_node[s - nnodes] */
+    double *m;        /**< nodal mass per slot (eq. 26) */
+    double *px;       /**< nodal x momentum per slot (eq. 26) */
+    double *py;       /**< nodal y momentum per slot */
+    double *fx;       /**< total nodal x force per slot (eq. 28) */
+    double *fy;       /**< total nodal y force per slot */
+    double *vx;       /**< nodal x velocity p/m per slot (eq. 34) */
+    double *vy;       /**< nodal y velocity per slot */
+    double *ax;       /**< nodal x acceleration f/m per slot */
+    double *ay;       /**< nodal y acceleration per slot */
+    unsigned char *fixed; /**< per node: GRID_FIX_X | GRID_FIX_Y */
+} Grid;
+
+/**
+ * @brief Allocate a grid of ncx x ncy cells of size dx x dy from (ox, oy).
+ * @param extra_slots slots reserved beyond one per node (0 for one field)
+ * @return 0 on success, -1 when memory is exhausted.
+ */
+int grid_init(Grid *g, double ox, double oy, double dx, double dy,
+              int ncx, int ncy, int extra_slots);
+
+/** @brief Release the grid's arrays. */
+void grid_free(Grid *g);
+
+/** @brief Task 0/8: zero masses, momenta and forces of every slot in use. */
+void grid_clear(Grid *g);
+
+/** @brief Node that owns slot @p s. */
+static inline int grid_slot_node(const Grid *g, int s)
+{
+    return s < g->nnodes ? s : g->slot_node[s - g->nnodes];
+}
+
+/** @brief x coordinate of node @p n. */
+static inline double grid_node_x(const Grid *g, int n)
+{
+    return g->ox + (n % g->nnx) * g->dx;
+}
+
+/** @brief y coordinate of node @p n. */
+static inline double grid_node_y(const Grid *g, int n)
+{
+    return g->oy + (n / g->nnx) * g->dy;
+}
+
+/** @brief Bytes held by the grid's arrays. */
+double grid_bytes(const Grid *g);
+
+#endif

@@ -1,0 +1,55 @@
+/**
+ * @file grid_update.c
+ * @brief Grid tasks: boundary conditions, nodal velocities and the
+ *        momentum update (Tasks 2-4, eq. 4, 29 and 34).
+ */
+#include "step.h"
+
+/// [grid_velocities]
+void grid_velocities(Sim *sim)
+{
+    Grid *g = &sim->grid;
+    for (int s = 0; s < g->nslots; s++) {
+        unsigned fix = g->fixed[grid_slot_node(g, s)];
+        if (fix & GRID_FIX_X)
+            g->px[s] = 0.0;
+        if (fix & GRID_FIX_Y)
+            g->py[s] = 0.0;
+        double m = g->m[s];
+        g->vx[s] = m > 0.0 ? g->px[s] / m : 0.0;
+        g->vy[s] = m > 0.0 ? g->py[s] / m : 0.0;
+    }
+}
+/// [grid_velocities]
+
+/// [grid_momentum_update]
+void grid_momentum_update(Sim *sim)
+{
+    Grid *g = &sim->grid;
+    const RunSettings *run = &sim->scene.run;
+    double dt = sim->dt, kappa = run->damping;
+    for (int s = 0; s < g->nslots; s++) {
+        double m = g->m[s];
+        if (m <= 0.0) {
+            g->vx[s] = g->vy[s] = g->ax[s] = g->ay[s] = 0.0;
+            continue;
+        }
+        unsigned fix = g->fixed[grid_slot_node(g, s)];
+        /* eq. 4: internal + external (body force m_i b) - damping */
+        double fx = g->fx[s] + m * run->gx - kappa * g->px[s];
+        double fy = g->fy[s] + m * run->gy - kappa * g->py[s];
+        if (fix & GRID_FIX_X)
+            fx = 0.0;
+        if (fix & GRID_FIX_Y)
+            fy = 0.0;
+        g->fx[s] = fx;
+        g->fy[s] = fy;
+        g->px[s] += dt * fx;                            /* eq. 29 */
+        g->py[s] += dt * fy;
+        g->vx[s] = g->px[s] / m;
+        g->vy[s] = g->py[s] / m;
+        g->ax[s] = fx / m;
+        g->ay[s] = fy / m;
+    }
+}
+/// [grid_momentum_update]

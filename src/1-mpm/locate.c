@@ -1,0 +1,16 @@
+/**
+ * @file locate.c
+ * @brief Task 0: find every point's cell before the step begins.
+ */
+#include "shape.h"
+#include "step.h"
+
+/// [locate_points]
+void locate_points(Sim *sim)
+{
+    Particles *P = &sim->pts;
+    const Grid *g = &sim->grid;
+    for (int p = 0; p < P->n; p++)
+        P->cell[p] = shape_locate(g, P->x[p], P->y[p], &P->xi[p], &P->eta[p]);
+}
+/// [locate_points]

@@ -1,0 +1,204 @@
+/**
+ * @file output.c
+ * @brief Writers for history, snapshots and CSV tables.
+ */
+#include "output.h"
+
+#include <errno.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "shape.h"
+#include "step.h"
+
+int output_make_dir(const char *dir)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s", dir);
+    for (char *c = path + 1; *c; c++) {
+        if (*c != '/')
+            continue;
+        *c = '\0';
+        if (mkdir(path, 0755) && errno != EEXIST)
+            return -1;
+        *c = '/';
+    }
+    if (mkdir(path, 0755) && errno != EEXIST)
+        return -1;
+    return 0;
+}
+
+void output_history_header(const Sim *sim, FILE *f)
+{
+    fprintf(f, "step,time,kinetic,strain,total,momentum_x,momentum_y");
+    for (int b = 0; b < sim->scene.nbodies; b++)
+        fprintf(f, ",kinetic_%s", sim->scene.bodies[b].name);
+    if (sim->hooks.history_columns) {
+        char buf[512] = "";
+        sim->hooks.history_columns(sim, buf, sizeof buf, 1);
+        fputs(buf, f);
+    }
+    fputc('\n', f);
+}
+
+void output_history_row(Sim *sim, FILE *f)
+{
+    Totals t = sim_totals(sim);
+    const Particles *P = &sim->pts;
+    memset(sim->bodyke, 0, (size_t)sim->scene.nbodies * sizeof(double));
+    for (int p = 0; p < P->n; p++)
+        sim->bodyke[P->body[p]] +=
+            0.5 * P->m[p] * (P->vx[p] * P->vx[p] + P->vy[p] * P->vy[p]);
+    fprintf(f, "%ld,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", sim->step, sim->t,
+            t.kinetic, t.strain, t.kinetic + t.strain, t.px, t.py);
+    for (int b = 0; b < sim->scene.nbodies; b++)
+        fprintf(f, ",%.10g", sim->bodyke[b]);
+    if (sim->hooks.history_columns) {
+        char buf[512] = "";
+        sim->hooks.history_columns(sim, buf, sizeof buf, 0);
+        fputs(buf, f);
+    }
+    fputc('\n', f);
+}
+
+static void vtu_scalar(FILE *f, const char *name, const double *a, int n)
+{
+    fprintf(f, "<DataArray type=\"Float64\" Name=\"%s\" format=\"ascii\">\n", name);
+    for (int p = 0; p < n; p++)
+        fprintf(f, "%.9g\n", a[p]);
+    fprintf(f, "</DataArray>\n");
+}
+
+static void vtu_int(FILE *f, const char *name, const int *a, int n)
+{
+    fprintf(f, "<DataArray type=\"Int32\" Name=\"%s\" format=\"ascii\">\n", name);
+    for (int p = 0; p < n; p++)
+        fprintf(f, "%d\n", a[p]);
+    fprintf(f, "</DataArray>\n");
+}
+
+/// [write_vtu]
+static int write_vtu(const Sim *sim, const char *path)
+{
+    const Particles *P = &sim->pts;
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return -1;
+    int n = P->n;
+    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+               "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
+               "<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n<Points>\n"
+               "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
+            n, n);
+    for (int p = 0; p < n; p++)
+        fprintf(f, "%.12g %.12g 0\n", P->x[p], P->y[p]);
+    fprintf(f, "</DataArray>\n</Points>\n<Cells>\n"
+               "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n");
+    for (int p = 0; p < n; p++)
+        fprintf(f, "%d\n", p);
+    fprintf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n");
+    for (int p = 0; p < n; p++)
+        fprintf(f, "%d\n", p + 1);
+    fprintf(f, "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n");
+    for (int p = 0; p < n; p++)
+        fprintf(f, "1\n");                              /* VTK_VERTEX */
+    fprintf(f, "</DataArray>\n</Cells>\n<PointData Scalars=\"sigma_xx\" Vectors=\"velocity\">\n"
+               "<DataArray type=\"Float64\" Name=\"velocity\" NumberOfComponents=\"3\" "
+               "format=\"ascii\">\n");
+    for (int p = 0; p < n; p++)
+        fprintf(f, "%.9g %.9g 0\n", P->vx[p], P->vy[p]);
+    fprintf(f, "</DataArray>\n");
+    vtu_scalar(f, "sigma_xx", P->sxx, n);
+    vtu_scalar(f, "sigma_yy", P->syy, n);
+    vtu_scalar(f, "sigma_xy", P->sxy, n);
+    vtu_scalar(f, "eps_xx", P->exx, n);
+    vtu_scalar(f, "eps_yy", P->eyy, n);
+    vtu_scalar(f, "eps_xy", P->exy, n);
+    vtu_scalar(f, "mass", P->m, n);
+    vtu_int(f, "material", P->mat, n);
+    vtu_int(f, "body", P->body, n);
+    fprintf(f, "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+    return fclose(f) == 0 ? 0 : -1;
+}
+/// [write_vtu]
+
+int output_grid_csv(Sim *sim, const char *path)
+{
+    Grid *g = &sim->grid;
+    const Particles *P = &sim->pts;
+    size_t bytes = (size_t)g->nnodes * sizeof(double);
+    /* between steps the grid arrays are free scratch space (Task 8) */
+    memset(g->m, 0, bytes);
+    memset(g->fx, 0, bytes);
+    memset(g->fy, 0, bytes);
+    memset(g->px, 0, bytes);
+    locate_points(sim);
+    for (int p = 0; p < P->n; p++) {
+        double S[4], Gx[4], Gy[4];
+        int n[4];
+        shape_linear(P->xi[p], P->eta[p], g->idx, g->idy, S, Gx, Gy);
+        shape_cell_nodes(g, P->cell[p], n);
+        for (int a = 0; a < 4; a++) {
+            double w = P->m[p] * S[a];
+            g->m[n[a]] += w;
+            g->fx[n[a]] += w * P->sxx[p];
+            g->fy[n[a]] += w * P->syy[p];
+            g->px[n[a]] += w * P->sxy[p];
+        }
+    }
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return -1;
+    fprintf(f, "x,y,mass,sigma_xx,sigma_yy,sigma_xy\n");
+    for (int n = 0; n < g->nnodes; n++) {
+        if (g->m[n] <= 0)
+            continue;
+        double im = 1.0 / g->m[n];
+        fprintf(f, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", grid_node_x(g, n),
+                grid_node_y(g, n), g->m[n], g->fx[n] * im, g->fy[n] * im,
+                g->px[n] * im);
+    }
+    grid_clear(g);
+    return fclose(f) == 0 ? 0 : -1;
+}
+
+int output_points_csv(const Sim *sim, const char *path)
+{
+    const Particles *P = &sim->pts;
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return -1;
+    fprintf(f, "x,y,vx,vy,sigma_xx,sigma_yy,sigma_xy,eps_xx,eps_yy,eps_xy,"
+               "mass,material,body\n");
+    for (int p = 0; p < P->n; p++)
+        fprintf(f, "%.12g,%.12g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
+                   "%.10g,%d,%d\n", P->x[p], P->y[p], P->vx[p], P->vy[p],
+                P->sxx[p], P->syy[p], P->sxy[p], P->exx[p], P->eyy[p], P->exy[p],
+                P->m[p], P->mat[p], P->body[p]);
+    return fclose(f) == 0 ? 0 : -1;
+}
+
+int output_snapshot(Sim *sim, const char *dir, int index, const double *times)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/particles_%05d.vtu", dir, index);
+    if (write_vtu(sim, path))
+        return -1;
+    snprintf(path, sizeof path, "%s/grid_%05d.csv", dir, index);
+    if (output_grid_csv(sim, path))
+        return -1;
+    if (sim->hooks.snapshot)
+        sim->hooks.snapshot(sim, dir, index);
+    /* rewrite the series so that it is complete after every snapshot */
+    snprintf(path, sizeof path, "%s/particles.pvd", dir);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return -1;
+    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+               "<Collection>\n");
+    for (int k = 0; k <= index; k++)
+        fprintf(f, "<DataSet timestep=\"%.10g\" file=\"particles_%05d.vtu\"/>\n",
+                times[k], k);
+    fprintf(f, "</Collection>\n</VTKFile>\n");
+    return fclose(f) == 0 ? 0 : -1;
+}

@@ -1,0 +1,37 @@
+/**
+ * @file output.h
+ * @brief Files a run writes: history.csv, ParaView snapshots (.vtu with a
+ *        .pvd series), grid stresses as CSV, and the final points as CSV.
+ */
+#ifndef MPM_OUTPUT_H
+#define MPM_OUTPUT_H
+
+#include <stdio.h>
+
+#include "sim.h"
+
+/** @brief Create @p dir and its parents if missing. @return 0 or -1. */
+int output_make_dir(const char *dir);
+
+/** @brief Write the header row of history.csv. */
+void output_history_header(const Sim *sim, FILE *f);
+
+/** @brief Append one row of history.csv for the current state. */
+void output_history_row(Sim *sim, FILE *f);
+
+/**
+ * @brief Write snapshot @p index: particles_NNNNN.vtu, grid_NNNNN.csv, the
+ *        stages' extras, and rewrite particles.pvd to list snapshots 0..index.
+ * @param times times of snapshots 0..index
+ * @return 0, or -1 when a file cannot be written.
+ */
+int output_snapshot(Sim *sim, const char *dir, int index, const double *times);
+
+/** @brief Write all points as CSV to @p path. @return 0 or -1. */
+int output_points_csv(const Sim *sim, const char *path);
+
+/** @brief Extrapolate point stresses to the grid nodes (mass-weighted, as
+ *         momenta are) and write x, y, mass, sigma to @p path. @return 0/-1. */
+int output_grid_csv(Sim *sim, const char *path);
+
+#endif

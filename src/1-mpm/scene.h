@@ -1,0 +1,109 @@
+/**
+ * @file scene.h
+ * @brief What a scene file describes: grid, run settings, materials,
+ *        bodies, grid boundary conditions and point loads.
+ *
+ * Units throughout: length mm, mass g, time ms; hence force N, stress MPa,
+ * velocity m/s (= mm/ms), energy mJ and density g/mm^3.
+ */
+#ifndef MPM_SCENE_H
+#define MPM_SCENE_H
+
+#include "material.h"
+
+/** Kind of region a body fills. */
+typedef enum { SHAPE_RECTANGLE, SHAPE_DISK, SHAPE_POLYGON } ShapeKind;
+
+/** A region of the plane: rectangle, disk or annulus, or polygon. */
+typedef struct Shape {
+    ShapeKind kind;  /**< which of the fields below apply */
+    double xmin;     /**< bounding box, all kinds */
+    double ymin;     /**< bounding box, all kinds */
+    double xmax;     /**< bounding box, all kinds */
+    double ymax;     /**< bounding box, all kinds */
+    double cx;       /**< disk: centre x */
+    double cy;       /**< disk: centre y */
+    double r;        /**< disk: outer radius */
+    double rin;      /**< disk: inner radius (annulus), 0 for a full disk */
+    int nv;          /**< polygon: number of vertices */
+    double *v;       /**< polygon: vertices x0, y0, x1, y1, ... */
+} Shape;
+
+/** One body: a shape filled with material points of one material. */
+typedef struct Body {
+    char name[64];     /**< name, used in history.csv columns */
+    int material;      /**< index into Scene::mat */
+    double thickness;  /**< out-of-plane thickness (mm) */
+    double vx;         /**< initial velocity x */
+    double vy;         /**< initial velocity y */
+    int ppc;           /**< k: k x k points per cell */
+    Shape shape;       /**< region filled */
+    int line;          /**< scene-file line, for messages */
+} Body;
+
+/** Nodes inside a box whose velocity is held at zero along x and/or y. */
+typedef struct Boundary {
+    Shape region;      /**< rectangle: nodes in it (edges included) are fixed */
+    unsigned fix;      /**< GRID_FIX_X | GRID_FIX_Y */
+} Boundary;
+
+/** A force shared equally by the points inside a box. */
+typedef struct Load {
+    Shape region;      /**< rectangle selecting the loaded points */
+    double fx;         /**< total force x (N) */
+    double fy;         /**< total force y (N) */
+    double ramp;       /**< time to reach full force (ms); 0 = constant */
+    int count;         /**< number of points loaded */
+    int *points;       /**< their indices */
+    int line;          /**< scene-file line, for messages */
+} Load;
+
+/** A stress-update scheme: where in the step the stress is updated. */
+typedef struct UpdateScheme {
+    const char *name;   /**< name in the scene file (run.update) */
+    double before;      /**< fraction of dt applied in Task 2 (USF-like) */
+    double after;       /**< fraction of dt applied in Task 6 */
+    int reextrapolate;  /**< Task 6c: re-extrapolate new velocities first */
+} UpdateScheme;
+
+/** Settings of the time integration and output. */
+typedef struct RunSettings {
+    double time;        /**< simulated time (ms) */
+    double cfl;         /**< time step factor on the stable step */
+    int allow_cfl_above_one; /**< the scene insists on cfl > 1 */
+    double damping;     /**< kappa of eq. 4 (1/ms) */
+    PlaneKind plane;    /**< plane stress or plane strain */
+    double gx;          /**< body force per unit mass x (mm/ms^2) */
+    double gy;          /**< body force per unit mass y (mm/ms^2) */
+    const UpdateScheme *scheme; /**< stress-update scheme */
+    int snapshots;      /**< number of particle/grid snapshots after t = 0 */
+    int history_every;  /**< steps between history rows (0 = automatic) */
+} RunSettings;
+
+/** A complete scene. */
+typedef struct Scene {
+    char file[256];     /**< scene file name, for messages */
+    double ox;          /**< grid origin x */
+    double oy;          /**< grid origin y */
+    double dx;          /**< cell width */
+    double dy;          /**< cell height */
+    int ncx;            /**< cells along x */
+    int ncy;            /**< cells along y */
+    RunSettings run;    /**< time integration and output */
+    int nmat;           /**< number of materials */
+    Material *mat;      /**< materials */
+    int nbodies;        /**< number of bodies */
+    Body *bodies;       /**< bodies */
+    int nbc;            /**< number of boundary regions */
+    Boundary *bc;       /**< grid boundary conditions */
+    int nloads;         /**< number of point loads */
+    Load *loads;        /**< point loads */
+} Scene;
+
+/** @brief Release what the scene allocated. */
+void scene_free(Scene *sc);
+
+/** @brief Is (x, y) inside @p s (edges included)? */
+int shape_contains(const Shape *s, double x, double y);
+
+#endif

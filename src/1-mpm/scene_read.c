@@ -1,0 +1,634 @@
+/**
+ * @file scene_read.c
+ * @brief The scene file: keys, types, physical ranges, and refusals of
+ *        features that later stages add.
+ */
+#include "scene_read.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int scene_error(SceneReader *r, const config_setting_t *s, const char *key,
+                const char *fmt, ...)
+{
+    int line = s ? (int)config_setting_source_line(s) : 0;
+    int used;
+    if (line > 0)
+        used = snprintf(r->err, r->errlen, "%s:%d: %s: ", r->file, line, key);
+    else
+        used = snprintf(r->err, r->errlen, "%s: %s: ", r->file, key);
+    if (used < 0 || (size_t)used >= r->errlen)
+        return -1;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(r->err + used, r->errlen - (size_t)used, fmt, ap);
+    va_end(ap);
+    return -1;
+}
+
+static int is_number(const config_setting_t *s)
+{
+    int t = config_setting_type(s);
+    return t == CONFIG_TYPE_INT || t == CONFIG_TYPE_INT64 ||
+           t == CONFIG_TYPE_FLOAT;
+}
+
+static double number_of(const config_setting_t *s)
+{
+    int t = config_setting_type(s);
+    if (t == CONFIG_TYPE_FLOAT)
+        return config_setting_get_float(s);
+    if (t == CONFIG_TYPE_INT64)
+        return (double)config_setting_get_int64(s);
+    return (double)config_setting_get_int(s);
+}
+
+int scene_number(SceneReader *r, const config_setting_t *group,
+                 const char *key, int required, double def, double *out)
+{
+    const config_setting_t *s = config_setting_get_member(group, key);
+    *out = def;
+    if (!s)
+        return required ? scene_error(r, group, key, "missing (required)") : 0;
+    if (!is_number(s))
+        return scene_error(r, s, key, "expected a number");
+    *out = number_of(s);
+    if (!isfinite(*out))
+        return scene_error(r, s, key, "value %g is not finite", *out);
+    return 1;
+}
+
+int scene_pair(SceneReader *r, const config_setting_t *group, const char *key,
+               int required, double out[2])
+{
+    const config_setting_t *s = config_setting_get_member(group, key);
+    if (!s)
+        return required ? scene_error(r, group, key, "missing (required)") : 0;
+    int t = config_setting_type(s);
+    if ((t != CONFIG_TYPE_ARRAY && t != CONFIG_TYPE_LIST) ||
+        config_setting_length(s) != 2)
+        return scene_error(r, s, key, "expected two numbers [a, b]");
+    for (int k = 0; k < 2; k++) {
+        const config_setting_t *e = config_setting_get_elem(s, (unsigned)k);
+        if (!is_number(e))
+            return scene_error(r, s, key, "expected two numbers [a, b]");
+        out[k] = number_of(e);
+    }
+    return 1;
+}
+
+int scene_string(SceneReader *r, const config_setting_t *group,
+                 const char *key, int required, const char **out)
+{
+    const config_setting_t *s = config_setting_get_member(group, key);
+    if (!s)
+        return required ? scene_error(r, group, key, "missing (required)") : 0;
+    if (config_setting_type(s) != CONFIG_TYPE_STRING)
+        return scene_error(r, s, key, "expected a string in quotes");
+    *out = config_setting_get_string(s);
+    return 1;
+}
+
+int scene_check_keys(SceneReader *r, const config_setting_t *group,
+                     const char *const *allowed)
+{
+    int n = config_setting_length(group);
+    for (int k = 0; k < n; k++) {
+        const config_setting_t *s = config_setting_get_elem(group, (unsigned)k);
+        const char *name = config_setting_name(s);
+        int ok = 0;
+        for (const char *const *a = allowed; *a && !ok; a++)
+            ok = name && strcmp(name, *a) == 0;
+        if (!ok) {
+            char list[256] = "";
+            for (const char *const *a = allowed; *a; a++) {
+                strncat(list, *a, sizeof list - strlen(list) - 1);
+                if (a[1])
+                    strncat(list, ", ", sizeof list - strlen(list) - 1);
+            }
+            return scene_error(r, s, name ? name : "?",
+                               "unknown key (expected one of: %s)", list);
+        }
+    }
+    return 0;
+}
+
+static const config_setting_t *group_of(SceneReader *r,
+                                        const config_setting_t *parent,
+                                        const char *key, int required,
+                                        int *status)
+{
+    const config_setting_t *s = config_setting_get_member(parent, key);
+    *status = 0;
+    if (!s) {
+        if (required)
+            *status = scene_error(r, parent, key, "missing (required)");
+        return NULL;
+    }
+    if (config_setting_type(s) != CONFIG_TYPE_GROUP) {
+        *status = scene_error(r, s, key, "expected a group { ... }");
+        return NULL;
+    }
+    return s;
+}
+
+static int read_rectangle(SceneReader *r, const config_setting_t *g, Shape *sh)
+{
+    static const char *const keys[] = {"min", "max", NULL};
+    double lo[2], hi[2];
+    if (scene_check_keys(r, g, keys) || scene_pair(r, g, "min", 1, lo) < 0 ||
+        scene_pair(r, g, "max", 1, hi) < 0)
+        return -1;
+    if (!(hi[0] > lo[0] && hi[1] > lo[1]))
+        return scene_error(r, g, "rectangle",
+                           "max [%g, %g] must exceed min [%g, %g]", hi[0],
+                           hi[1], lo[0], lo[1]);
+    sh->kind = SHAPE_RECTANGLE;
+    sh->xmin = lo[0];
+    sh->ymin = lo[1];
+    sh->xmax = hi[0];
+    sh->ymax = hi[1];
+    return 0;
+}
+
+static int read_disk(SceneReader *r, const config_setting_t *g, Shape *sh)
+{
+    static const char *const keys[] = {"center", "radius", "inner_radius", NULL};
+    double c[2];
+    if (scene_check_keys(r, g, keys) || scene_pair(r, g, "center", 1, c) < 0 ||
+        scene_number(r, g, "radius", 1, 0, &sh->r) < 0 ||
+        scene_number(r, g, "inner_radius", 0, 0, &sh->rin) < 0)
+        return -1;
+    if (!(sh->r > 0))
+        return scene_error(r, config_setting_get_member(g, "radius"), "radius",
+                           "%g must be > 0", sh->r);
+    if (!(sh->rin >= 0 && sh->rin < sh->r))
+        return scene_error(r, config_setting_get_member(g, "inner_radius"),
+                           "inner_radius", "%g must be in [0, radius)", sh->rin);
+    sh->kind = SHAPE_DISK;
+    sh->cx = c[0];
+    sh->cy = c[1];
+    sh->xmin = c[0] - sh->r;
+    sh->xmax = c[0] + sh->r;
+    sh->ymin = c[1] - sh->r;
+    sh->ymax = c[1] + sh->r;
+    return 0;
+}
+
+static int read_polygon(SceneReader *r, const config_setting_t *s, Shape *sh)
+{
+    int n = config_setting_length(s);
+    if (config_setting_type(s) != CONFIG_TYPE_LIST || n < 3)
+        return scene_error(r, s, "polygon",
+                           "expected a list of at least 3 points ( [x, y], ... )");
+    sh->kind = SHAPE_POLYGON;
+    sh->nv = n;
+    sh->v = malloc(2 * (size_t)n * sizeof(double));
+    if (!sh->v)
+        return scene_error(r, s, "polygon", "out of memory");
+    sh->xmin = sh->ymin = INFINITY;
+    sh->xmax = sh->ymax = -INFINITY;
+    for (int k = 0; k < n; k++) {
+        const config_setting_t *e = config_setting_get_elem(s, (unsigned)k);
+        int t = config_setting_type(e);
+        if ((t != CONFIG_TYPE_ARRAY && t != CONFIG_TYPE_LIST) ||
+            config_setting_length(e) != 2 ||
+            !is_number(config_setting_get_elem(e, 0)) ||
+            !is_number(config_setting_get_elem(e, 1)))
+            return scene_error(r, e, "polygon", "point %d: expected [x, y]", k);
+        double x = number_of(config_setting_get_elem(e, 0));
+        double y = number_of(config_setting_get_elem(e, 1));
+        sh->v[2 * k] = x;
+        sh->v[2 * k + 1] = y;
+        sh->xmin = fmin(sh->xmin, x);
+        sh->xmax = fmax(sh->xmax, x);
+        sh->ymin = fmin(sh->ymin, y);
+        sh->ymax = fmax(sh->ymax, y);
+    }
+    if (!(sh->xmax > sh->xmin && sh->ymax > sh->ymin))
+        return scene_error(r, s, "polygon", "the points enclose no area");
+    return 0;
+}
+
+int scene_shape(SceneReader *r, const config_setting_t *group, Shape *out)
+{
+    static const char *const kinds[] = {"rectangle", "disk", "polygon"};
+    const config_setting_t *found = NULL;
+    int which = -1;
+    for (int k = 0; k < 3; k++) {
+        const config_setting_t *s = config_setting_get_member(group, kinds[k]);
+        if (!s)
+            continue;
+        if (found)
+            return scene_error(r, s, kinds[k],
+                               "give one shape only (also found %s)", kinds[which]);
+        found = s;
+        which = k;
+    }
+    memset(out, 0, sizeof *out);
+    if (!found)
+        return scene_error(r, group, "shape",
+                           "missing: give one of rectangle, disk or polygon");
+    if (which < 2 && config_setting_type(found) != CONFIG_TYPE_GROUP)
+        return scene_error(r, found, kinds[which], "expected a group { ... }");
+    if (which == 0)
+        return read_rectangle(r, found, out);
+    if (which == 1)
+        return read_disk(r, found, out);
+    return read_polygon(r, found, out);
+}
+
+static int read_grid(Sim *sim, SceneReader *r, const config_setting_t *root)
+{
+    static const char *const keys[] = {"origin", "cells", "cell_size", NULL};
+    int st;
+    const config_setting_t *g = group_of(r, root, "grid", 1, &st);
+    Scene *sc = &sim->scene;
+    double o[2] = {0, 0}, n[2], h[2];
+    if (!g || scene_check_keys(r, g, keys) || scene_pair(r, g, "origin", 0, o) < 0 ||
+        scene_pair(r, g, "cells", 1, n) < 0 || scene_pair(r, g, "cell_size", 1, h) < 0)
+        return -1;
+    const config_setting_t *cs = config_setting_get_member(g, "cells");
+    if (n[0] != floor(n[0]) || n[1] != floor(n[1]) || n[0] < 1 || n[1] < 1 ||
+        n[0] * n[1] > 1e8)
+        return scene_error(r, cs, "cells", "[%g, %g] must be whole numbers >= 1 "
+                           "(and at most 1e8 cells)", n[0], n[1]);
+    if (!(h[0] > 0 && h[1] > 0))
+        return scene_error(r, config_setting_get_member(g, "cell_size"), "cell_size",
+                           "[%g, %g] must be > 0", h[0], h[1]);
+    sc->ox = o[0];
+    sc->oy = o[1];
+    sc->ncx = (int)n[0];
+    sc->ncy = (int)n[1];
+    sc->dx = h[0];
+    sc->dy = h[1];
+    return 0;
+}
+
+static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
+{
+    static const char *const keys[] = {"time", "cfl", "allow_cfl_above_one",
+        "update", "damping", "plane", "gravity", "snapshots", "history_every",
+        NULL};
+    int st;
+    const config_setting_t *g = group_of(r, root, "run", 1, &st);
+    RunSettings *run = &sim->scene.run;
+    double gr[2] = {0, 0}, snaps, hist;
+    const char *update = "musl", *plane = "stress";
+    if (!g || scene_check_keys(r, g, keys) ||
+        scene_number(r, g, "time", 1, 0, &run->time) < 0 ||
+        scene_number(r, g, "cfl", 0, 0.5, &run->cfl) < 0 ||
+        scene_number(r, g, "damping", 0, 0.0, &run->damping) < 0 ||
+        scene_pair(r, g, "gravity", 0, gr) < 0 ||
+        scene_number(r, g, "snapshots", 0, 10, &snaps) < 0 ||
+        scene_number(r, g, "history_every", 0, 0, &hist) < 0 ||
+        scene_string(r, g, "update", 0, &update) < 0 ||
+        scene_string(r, g, "plane", 0, &plane) < 0)
+        return -1;
+    const config_setting_t *ins = config_setting_get_member(g, "allow_cfl_above_one");
+    if (ins && config_setting_type(ins) != CONFIG_TYPE_BOOL)
+        return scene_error(r, ins, "allow_cfl_above_one", "expected true or false");
+    run->allow_cfl_above_one = ins ? config_setting_get_bool(ins) : 0;
+    run->gx = gr[0];
+    run->gy = gr[1];
+    if (!(run->time > 0))
+        return scene_error(r, config_setting_get_member(g, "time"), "time",
+                           "%g must be > 0", run->time);
+    if (!(run->cfl > 0))
+        return scene_error(r, config_setting_get_member(g, "cfl"), "cfl",
+                           "%g must be > 0", run->cfl);
+    if (run->cfl > 1 && !run->allow_cfl_above_one)
+        return scene_error(r, config_setting_get_member(g, "cfl"), "cfl",
+                           "%g exceeds 1, the explicit stability limit; set "
+                           "allow_cfl_above_one = true to insist", run->cfl);
+    if (!(run->damping >= 0))
+        return scene_error(r, config_setting_get_member(g, "damping"), "damping",
+                           "%g must be >= 0", run->damping);
+    if (snaps < 0 || snaps != floor(snaps) || snaps > 100000)
+        return scene_error(r, config_setting_get_member(g, "snapshots"), "snapshots",
+                           "%g must be a whole number in [0, 100000]", snaps);
+    if (hist < 0 || hist != floor(hist) || hist > 1e9)
+        return scene_error(r, config_setting_get_member(g, "history_every"),
+                           "history_every", "%g must be a whole number >= 0", hist);
+    run->snapshots = (int)snaps;
+    run->history_every = (int)hist;
+    if (strcmp(plane, "stress") == 0)
+        run->plane = PLANE_STRESS;
+    else if (strcmp(plane, "strain") == 0)
+        run->plane = PLANE_STRAIN;
+    else
+        return scene_error(r, config_setting_get_member(g, "plane"), "plane",
+                           "\"%s\": expected \"stress\" or \"strain\"", plane);
+    run->scheme = hooks_find_scheme(&sim->hooks, update);
+    if (!run->scheme) {
+        const config_setting_t *u = config_setting_get_member(g, "update");
+        const Refusal *why = hooks_find_refusal(&sim->hooks, "run.update", update);
+        if (why)
+            return scene_error(r, u, "update", "\"%s\" is added by %s; this "
+                               "build does not have it", update, why->stage);
+        char list[128] = "";
+        for (int k = 0; k < sim->hooks.nschemes; k++) {
+            strncat(list, sim->hooks.schemes[k].name, sizeof list - strlen(list) - 1);
+            if (k + 1 < sim->hooks.nschemes)
+                strncat(list, ", ", sizeof list - strlen(list) - 1);
+        }
+        return scene_error(r, u, "update", "\"%s\" is not a stress-update "
+                           "scheme (expected one of: %s)", update, list);
+    }
+    return 0;
+}
+
+static int read_materials(Sim *sim, SceneReader *r, const config_setting_t *root)
+{
+    static const char *const keys[] = {"name", "E", "nu", "rho", NULL};
+    const config_setting_t *l = config_setting_get_member(root, "materials");
+    Scene *sc = &sim->scene;
+    if (!l)
+        return scene_error(r, root, "materials", "missing (required)");
+    if (config_setting_type(l) != CONFIG_TYPE_LIST || config_setting_length(l) < 1)
+        return scene_error(r, l, "materials", "expected a list ( { ... }, ... )");
+    sc->nmat = config_setting_length(l);
+    sc->mat = calloc((size_t)sc->nmat, sizeof(Material));
+    if (!sc->mat)
+        return scene_error(r, l, "materials", "out of memory");
+    for (int k = 0; k < sc->nmat; k++) {
+        const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
+        Material *m = &sc->mat[k];
+        const char *name;
+        if (config_setting_type(g) != CONFIG_TYPE_GROUP)
+            return scene_error(r, g, "materials", "entry %d: expected a group", k);
+        if (scene_check_keys(r, g, keys) || scene_string(r, g, "name", 1, &name) < 0 ||
+            scene_number(r, g, "E", 1, 0, &m->E) < 0 ||
+            scene_number(r, g, "nu", 1, 0, &m->nu) < 0 ||
+            scene_number(r, g, "rho", 1, 0, &m->rho) < 0)
+            return -1;
+        snprintf(m->name, sizeof m->name, "%s", name);
+        for (int j = 0; j < k; j++)
+            if (strcmp(sc->mat[j].name, m->name) == 0)
+                return scene_error(r, g, "name", "material \"%s\" defined twice", name);
+        if (!(m->E > 0))
+            return scene_error(r, config_setting_get_member(g, "E"), "E",
+                               "%g: Young's modulus must be > 0", m->E);
+        if (!(m->nu > -1 && m->nu < 0.5))
+            return scene_error(r, config_setting_get_member(g, "nu"), "nu",
+                               "%g: Poisson's ratio must lie in (-1, 0.5)", m->nu);
+        if (!(m->rho > 0))
+            return scene_error(r, config_setting_get_member(g, "rho"), "rho",
+                               "%g: density must be > 0 (g/mm^3)", m->rho);
+        material_prepare(m, sc->run.plane);
+    }
+    return 0;
+}
+
+static int inside_grid(const Scene *sc, const Shape *s)
+{
+    return s->xmin >= sc->ox && s->ymin >= sc->oy &&
+           s->xmax <= sc->ox + sc->ncx * sc->dx &&
+           s->ymax <= sc->oy + sc->ncy * sc->dy;
+}
+
+static int read_bodies(Sim *sim, SceneReader *r, const config_setting_t *root)
+{
+    static const char *const keys[] = {"name", "material", "thickness", "velocity",
+        "points_per_cell", "rectangle", "disk", "polygon", NULL};
+    const config_setting_t *l = config_setting_get_member(root, "bodies");
+    Scene *sc = &sim->scene;
+    if (!l)
+        return scene_error(r, root, "bodies", "missing (required)");
+    if (config_setting_type(l) != CONFIG_TYPE_LIST || config_setting_length(l) < 1)
+        return scene_error(r, l, "bodies", "expected a list ( { ... }, ... )");
+    int n = config_setting_length(l);
+    sc->bodies = calloc((size_t)n, sizeof(Body));
+    if (!sc->bodies)
+        return scene_error(r, l, "bodies", "out of memory");
+    for (int k = 0; k < n; k++) {
+        const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
+        Body *b = &sc->bodies[k];
+        const char *name = NULL, *mat;
+        double v[2] = {0, 0}, ppc;
+        if (config_setting_type(g) != CONFIG_TYPE_GROUP)
+            return scene_error(r, g, "bodies", "entry %d: expected a group", k);
+        sc->nbodies = k + 1;
+        b->line = (int)config_setting_source_line(g);
+        if (scene_check_keys(r, g, keys) || scene_string(r, g, "name", 0, &name) < 0 ||
+            scene_string(r, g, "material", 1, &mat) < 0 ||
+            scene_number(r, g, "thickness", 0, 1.0, &b->thickness) < 0 ||
+            scene_pair(r, g, "velocity", 0, v) < 0 ||
+            scene_number(r, g, "points_per_cell", 0, 2, &ppc) < 0 ||
+            scene_shape(r, g, &b->shape) < 0)
+            return -1;
+        if (name)
+            snprintf(b->name, sizeof b->name, "%s", name);
+        else
+            snprintf(b->name, sizeof b->name, "body%d", k);
+        for (const char *c = b->name; *c; c++)
+            if (!isalnum((unsigned char)*c) && *c != '_' && *c != '-')
+                return scene_error(r, g, "name", "\"%s\": use letters, digits, "
+                                   "'_' and '-' only", b->name);
+        b->material = -1;
+        for (int j = 0; j < sc->nmat; j++)
+            if (strcmp(sc->mat[j].name, mat) == 0)
+                b->material = j;
+        if (b->material < 0)
+            return scene_error(r, config_setting_get_member(g, "material"), "material",
+                               "\"%s\" is not defined under materials", mat);
+        if (!(b->thickness > 0))
+            return scene_error(r, config_setting_get_member(g, "thickness"),
+                               "thickness", "%g must be > 0", b->thickness);
+        if (ppc != floor(ppc) || ppc < 1 || ppc > 16)
+            return scene_error(r, config_setting_get_member(g, "points_per_cell"),
+                               "points_per_cell", "%g must be a whole number in "
+                               "[1, 16]", ppc);
+        b->ppc = (int)ppc;
+        b->vx = v[0];
+        b->vy = v[1];
+        if (!inside_grid(sc, &b->shape))
+            return scene_error(r, g, b->name, "the body [%g, %g] x [%g, %g] lies "
+                               "outside the grid [%g, %g] x [%g, %g]",
+                               b->shape.xmin, b->shape.xmax, b->shape.ymin,
+                               b->shape.ymax, sc->ox, sc->ox + sc->ncx * sc->dx,
+                               sc->oy, sc->oy + sc->ncy * sc->dy);
+    }
+    return 0;
+}
+
+static int read_regions(SceneReader *r, const config_setting_t *root,
+                        const char *key, int *count, void **items, size_t size)
+{
+    const config_setting_t *l = config_setting_get_member(root, key);
+    if (!l)
+        return 0;
+    if (config_setting_type(l) != CONFIG_TYPE_LIST)
+        return scene_error(r, l, key, "expected a list ( { ... }, ... )");
+    *count = config_setting_length(l);
+    *items = calloc((size_t)*count + 1, size);
+    if (!*items)
+        return scene_error(r, l, key, "out of memory");
+    for (int k = 0; k < *count; k++)
+        if (config_setting_type(config_setting_get_elem(l, (unsigned)k)) !=
+            CONFIG_TYPE_GROUP)
+            return scene_error(r, config_setting_get_elem(l, (unsigned)k), key,
+                               "entry %d: expected a group", k);
+    return 1;
+}
+
+static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *root)
+{
+    static const char *const keys[] = {"rectangle", "fix", NULL};
+    Scene *sc = &sim->scene;
+    int st = read_regions(r, root, "boundaries", &sc->nbc, (void **)&sc->bc,
+                          sizeof(Boundary));
+    if (st <= 0)
+        return st;
+    const config_setting_t *l = config_setting_get_member(root, "boundaries");
+    for (int k = 0; k < sc->nbc; k++) {
+        const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
+        const char *fix;
+        if (scene_check_keys(r, g, keys) || scene_shape(r, g, &sc->bc[k].region) < 0 ||
+            scene_string(r, g, "fix", 1, &fix) < 0)
+            return -1;
+        if (strcmp(fix, "x") == 0)
+            sc->bc[k].fix = GRID_FIX_X;
+        else if (strcmp(fix, "y") == 0)
+            sc->bc[k].fix = GRID_FIX_Y;
+        else if (strcmp(fix, "xy") == 0)
+            sc->bc[k].fix = GRID_FIX_X | GRID_FIX_Y;
+        else
+            return scene_error(r, config_setting_get_member(g, "fix"), "fix",
+                               "\"%s\": expected \"x\", \"y\" or \"xy\"", fix);
+    }
+    return 0;
+}
+
+static int read_loads(Sim *sim, SceneReader *r, const config_setting_t *root)
+{
+    static const char *const keys[] = {"rectangle", "force", "ramp", NULL};
+    Scene *sc = &sim->scene;
+    int st = read_regions(r, root, "loads", &sc->nloads, (void **)&sc->loads,
+                          sizeof(Load));
+    if (st <= 0)
+        return st;
+    const config_setting_t *l = config_setting_get_member(root, "loads");
+    for (int k = 0; k < sc->nloads; k++) {
+        const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
+        Load *L = &sc->loads[k];
+        double f[2];
+        L->line = (int)config_setting_source_line(g);
+        if (scene_check_keys(r, g, keys) || scene_shape(r, g, &L->region) < 0 ||
+            scene_pair(r, g, "force", 1, f) < 0 ||
+            scene_number(r, g, "ramp", 0, 0.0, &L->ramp) < 0)
+            return -1;
+        if (!(L->ramp >= 0))
+            return scene_error(r, config_setting_get_member(g, "ramp"), "ramp",
+                               "%g must be >= 0", L->ramp);
+        L->fx = f[0];
+        L->fy = f[1];
+    }
+    return 0;
+}
+
+int scene_read(Sim *sim, const config_t *cfg, SceneReader *r)
+{
+    static const char *const core[] = {"grid", "run", "materials", "bodies",
+                                       "boundaries", "loads"};
+    const config_setting_t *root = config_root_setting(cfg);
+    snprintf(sim->scene.file, sizeof sim->scene.file, "%s", r->file);
+    /* every top-level key: ours, a stage's section, a later stage's, or a typo */
+    for (int k = 0; k < config_setting_length(root); k++) {
+        const config_setting_t *s = config_setting_get_elem(root, (unsigned)k);
+        const char *name = config_setting_name(s);
+        int known = 0;
+        for (size_t c = 0; c < sizeof core / sizeof core[0]; c++)
+            known |= strcmp(name, core[c]) == 0;
+        for (int c = 0; c < sim->hooks.nsections; c++)
+            known |= strcmp(name, sim->hooks.sections[c].key) == 0;
+        if (known)
+            continue;
+        const Refusal *why = hooks_find_refusal(&sim->hooks, name, NULL);
+        if (why)
+            return scene_error(r, s, name, "this scene needs %s; this build "
+                               "does not have it", why->stage);
+        return scene_error(r, s, name, "unknown key (expected grid, run, "
+                           "materials, bodies, boundaries, loads%s)",
+                           sim->hooks.nsections ? " or a stage's section" : "");
+    }
+    if (read_grid(sim, r, root) || read_run(sim, r, root) ||
+        read_materials(sim, r, root) || read_bodies(sim, r, root) ||
+        read_boundaries(sim, r, root) || read_loads(sim, r, root))
+        return -1;
+    for (int c = 0; c < sim->hooks.nsections; c++) {
+        const config_setting_t *s =
+            config_setting_get_member(root, sim->hooks.sections[c].key);
+        if (s && sim->hooks.sections[c].parse(sim, s, r->err, r->errlen))
+            return -1;
+    }
+    return 0;
+}
+
+/* ---- command-line overrides "a.b.c=value" -------------------------------- */
+
+int scene_override(config_t *cfg, const char *assignment, char *err,
+                   size_t errlen)
+{
+    char path[256];
+    const char *eq = strchr(assignment, '=');
+    if (!eq || eq == assignment || (size_t)(eq - assignment) >= sizeof path) {
+        snprintf(err, errlen, "override \"%s\": expected key.path=value", assignment);
+        return -1;
+    }
+    memcpy(path, assignment, (size_t)(eq - assignment));
+    path[eq - assignment] = '\0';
+    const char *value = eq + 1;
+    char *dot = strrchr(path, '.');
+    config_setting_t *parent;
+    const char *name;
+    if (dot) {
+        *dot = '\0';
+        parent = config_lookup(cfg, path);
+        name = dot + 1;
+    } else {
+        parent = config_root_setting(cfg);
+        name = path;
+    }
+    if (!parent || config_setting_type(parent) != CONFIG_TYPE_GROUP) {
+        snprintf(err, errlen, "override \"%s\": no group \"%s\" in the scene",
+                 assignment, path);
+        return -1;
+    }
+    if (config_setting_get_member(parent, name))
+        config_setting_remove(parent, name);
+    char *end;
+    errno = 0;
+    long iv = strtol(value, &end, 10);
+    config_setting_t *s;
+    if (*value && !*end && errno == 0) {
+        s = config_setting_add(parent, name, CONFIG_TYPE_INT64);
+        if (s)
+            config_setting_set_int64(s, iv);
+    } else {
+        double dv = strtod(value, &end);
+        if (*value && !*end) {
+            s = config_setting_add(parent, name, CONFIG_TYPE_FLOAT);
+            if (s)
+                config_setting_set_float(s, dv);
+        } else if (strcmp(value, "true") == 0 || strcmp(value, "false") == 0) {
+            s = config_setting_add(parent, name, CONFIG_TYPE_BOOL);
+            if (s)
+                config_setting_set_bool(s, value[0] == 't');
+        } else {
+            s = config_setting_add(parent, name, CONFIG_TYPE_STRING);
+            if (s)
+                config_setting_set_string(s, value);
+        }
+    }
+    if (!s) {
+        snprintf(err, errlen, "override \"%s\": cannot set \"%s\"", assignment, name);
+        return -1;
+    }
+    return 0;
+}

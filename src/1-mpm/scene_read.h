@@ -1,0 +1,61 @@
+/**
+ * @file scene_read.h
+ * @brief Reading a scene from a parsed libconfig tree, with messages that
+ *        name the file, the line and the key.
+ */
+#ifndef MPM_SCENE_READ_H
+#define MPM_SCENE_READ_H
+
+#include <libconfig.h>
+#include <stddef.h>
+
+#include "sim.h"
+
+/** Where messages go while a scene is read. */
+typedef struct SceneReader {
+    const char *file;  /**< scene file name */
+    char *err;         /**< message buffer */
+    size_t errlen;     /**< its size */
+} SceneReader;
+
+/**
+ * @brief Write "file:line: key: message" into the reader's buffer.
+ * @return -1, for the caller to return.
+ */
+int scene_error(SceneReader *r, const config_setting_t *s, const char *key,
+                const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+
+/** @brief A number (integer or real) under @p key of @p group.
+ *  @return 1 found, 0 absent (with *out = def), -1 wrong type or absent and
+ *          required. */
+int scene_number(SceneReader *r, const config_setting_t *group,
+                 const char *key, int required, double def, double *out);
+
+/** @brief A pair of numbers [a, b] under @p key; same returns as
+ *         scene_number(). */
+int scene_pair(SceneReader *r, const config_setting_t *group, const char *key,
+               int required, double out[2]);
+
+/** @brief A string under @p key; same returns as scene_number(). */
+int scene_string(SceneReader *r, const config_setting_t *group,
+                 const char *key, int required, const char **out);
+
+/** @brief Refuse any member of @p group not named in @p allowed (NULL-ended). */
+int scene_check_keys(SceneReader *r, const config_setting_t *group,
+                     const char *const *allowed);
+
+/**
+ * @brief Read a shape: exactly one of rectangle, disk or polygon in @p group.
+ * @return 0 or -1.
+ */
+int scene_shape(SceneReader *r, const config_setting_t *group, Shape *out);
+
+/** @brief Fill sim->scene from @p cfg and call the stages' scene sections.
+ *  @return 0, or -1 with a message. */
+int scene_read(Sim *sim, const config_t *cfg, SceneReader *r);
+
+/** @brief Apply "a.b.c=value" to @p cfg. @return 0, or -1 with a message. */
+int scene_override(config_t *cfg, const char *assignment, char *err,
+                   size_t errlen);
+
+#endif

@@ -1,0 +1,127 @@
+/**
+ * @file setup.c
+ * @brief From a scene to a ready simulation: material points from shapes,
+ *        grid boundary conditions, loaded points, and the time step.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "setup.h"
+
+/// [fill_body]
+/** Fill body @p b with k x k points per cell at the centres of the sub-cells. */
+static int fill_body(Sim *sim, int b)
+{
+    const Scene *sc = &sim->scene;
+    const Body *B = &sc->bodies[b];
+    const Material *mat = &sc->mat[B->material];
+    int k = B->ppc;
+    double hx = sc->dx / k, hy = sc->dy / k;
+    double vol = hx * hy * B->thickness;                /* area x thickness */
+    int i0 = (int)floor((B->shape.xmin - sc->ox) / sc->dx);
+    int i1 = (int)ceil((B->shape.xmax - sc->ox) / sc->dx);
+    int j0 = (int)floor((B->shape.ymin - sc->oy) / sc->dy);
+    int j1 = (int)ceil((B->shape.ymax - sc->oy) / sc->dy);
+    for (int j = j0 * k; j < j1 * k; j++)
+        for (int i = i0 * k; i < i1 * k; i++) {
+            double x = sc->ox + (i + 0.5) * hx, y = sc->oy + (j + 0.5) * hy;
+            if (!shape_contains(&B->shape, x, y))
+                continue;
+            int p = particles_add(&sim->pts, x, y, mat->rho * vol, vol,
+                                  B->material, b);
+            if (p < 0)
+                return -1;
+            sim->pts.vx[p] = B->vx;
+            sim->pts.vy[p] = B->vy;
+        }
+    return 0;
+}
+/// [fill_body]
+
+int setup_points(Sim *sim, char *err, size_t errlen)
+{
+    Scene *sc = &sim->scene;
+    if (particles_init(&sim->pts, 1024)) {
+        snprintf(err, errlen, "%s: out of memory for the points", sc->file);
+        return -1;
+    }
+    for (int b = 0; b < sc->nbodies; b++) {
+        int before = sim->pts.n;
+        if (fill_body(sim, b)) {
+            snprintf(err, errlen, "%s: out of memory for the points", sc->file);
+            return -1;
+        }
+        if (sim->pts.n == before) {
+            snprintf(err, errlen, "%s:%d: body \"%s\" holds no material point "
+                     "(shape smaller than a point spacing?)", sc->file,
+                     sc->bodies[b].line, sc->bodies[b].name);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+int setup_grid(Sim *sim, int extra_slots, char *err, size_t errlen)
+{
+    Scene *sc = &sim->scene;
+    Grid *g = &sim->grid;
+    if (grid_init(g, sc->ox, sc->oy, sc->dx, sc->dy, sc->ncx, sc->ncy, extra_slots)) {
+        snprintf(err, errlen, "%s: out of memory for the grid", sc->file);
+        return -1;
+    }
+    double tol = 1e-9 * fmin(sc->dx, sc->dy);
+    for (int k = 0; k < sc->nbc; k++) {
+        Shape r = sc->bc[k].region;          /* nodes on its edges count */
+        r.xmin -= tol;
+        r.ymin -= tol;
+        r.xmax += tol;
+        r.ymax += tol;
+        for (int n = 0; n < g->nnodes; n++)
+            if (shape_contains(&r, grid_node_x(g, n), grid_node_y(g, n)))
+                g->fixed[n] |= (unsigned char)sc->bc[k].fix;
+    }
+    return 0;
+}
+
+int setup_loads(Sim *sim, char *err, size_t errlen)
+{
+    Scene *sc = &sim->scene;
+    const Particles *P = &sim->pts;
+    for (int l = 0; l < sc->nloads; l++) {
+        Load *L = &sc->loads[l];
+        L->points = malloc(sizeof(int) * (size_t)(P->n + 1));
+        if (!L->points) {
+            snprintf(err, errlen, "%s: out of memory", sc->file);
+            return -1;
+        }
+        L->count = 0;
+        for (int p = 0; p < P->n; p++)
+            if (shape_contains(&L->region, P->x[p], P->y[p]))
+                L->points[L->count++] = p;
+        if (L->count == 0) {
+            snprintf(err, errlen, "%s:%d: load: no material point lies in "
+                     "[%g, %g] x [%g, %g]", sc->file, L->line, L->region.xmin,
+                     L->region.xmax, L->region.ymin, L->region.ymax);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/// [sim_set_time_step]
+void sim_set_time_step(Sim *sim)
+{
+    const Scene *sc = &sim->scene;
+    const Particles *P = &sim->pts;
+    double c = 0.0, v2 = 0.0;
+    for (int k = 0; k < sc->nmat; k++)
+        c = fmax(c, sc->mat[k].wave);
+    for (int p = 0; p < P->n; p++)
+        v2 = fmax(v2, P->vx[p] * P->vx[p] + P->vy[p] * P->vy[p]);
+    /* the fastest wave, carried by the fastest point, crosses a cell */
+    sim->dt = sc->run.cfl * fmin(sc->dx, sc->dy) / (c + sqrt(v2));
+    sim->nsteps = (long)ceil(sc->run.time / sim->dt - 1e-9);
+}
+/// [sim_set_time_step]

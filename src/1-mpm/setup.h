@@ -1,0 +1,22 @@
+/**
+ * @file setup.h
+ * @brief Steps that turn a read scene into a simulation ready to run.
+ */
+#ifndef MPM_SETUP_H
+#define MPM_SETUP_H
+
+#include <stddef.h>
+
+#include "sim.h"
+
+/** @brief Generate the material points of every body. @return 0 or -1. */
+int setup_points(Sim *sim, char *err, size_t errlen);
+
+/** @brief Allocate the grid with @p extra_slots field slots and mark the
+ *         fixed nodes. @return 0 or -1. */
+int setup_grid(Sim *sim, int extra_slots, char *err, size_t errlen);
+
+/** @brief Find the points each load acts on. @return 0 or -1. */
+int setup_loads(Sim *sim, char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,91 @@
+/**
+ * @file sim.h
+ * @brief A simulation: the scene, its material points, the grid, the hooks
+ *        of the build, and the clock.
+ */
+#ifndef MPM_SIM_H
+#define MPM_SIM_H
+
+#include <stddef.h>
+
+#include "grid.h"
+#include "hooks.h"
+#include "particles.h"
+#include "scene.h"
+
+/** Number of per-stage state pointers a simulation carries. */
+#define SIM_MAX_EXT 8
+
+/** Why a run stopped early: the step, the point and the quantity. */
+typedef struct Failure {
+    long step;          /**< step at which it was detected */
+    double time;        /**< time at the start of that step */
+    int particle;       /**< point index */
+    const char *quantity; /**< "velocity", "position", "stress", ... */
+    double value;       /**< offending value */
+} Failure;
+
+/** One simulation. */
+typedef struct Sim {
+    Scene scene;        /**< what the scene file said */
+    Particles pts;      /**< material points */
+    Grid grid;          /**< background grid */
+    Hooks hooks;        /**< behaviour added by the stages of this build */
+    void *ext[SIM_MAX_EXT]; /**< state of stage N lives in ext[N] */
+    double t;           /**< current time (ms) */
+    double dt;          /**< time step (ms) */
+    long step;          /**< steps taken */
+    long nsteps;        /**< steps the run will take */
+    Failure fail;       /**< filled when sim_step() reports instability */
+    double *bodyke;     /**< scratch: kinetic energy per body */
+} Sim;
+
+/** Quantities that history.csv records at one instant. */
+typedef struct Totals {
+    double kinetic;     /**< sum 1/2 m v^2 (mJ) */
+    double strain;      /**< sum V0 * 1/2 sigma : eps (mJ) */
+    double px;          /**< total x momentum (g mm/ms) */
+    double py;          /**< total y momentum */
+} Totals;
+
+/** @brief Zero a simulation; the caller then installs the stages' hooks. */
+void sim_init(Sim *sim);
+
+/**
+ * @brief Read a scene file, apply "key.path=value" overrides, generate the
+ *        points and prepare the grid and the time step.
+ * @return 0, or non-zero with a message "file:line: ..." in @p err.
+ */
+int sim_load_file(Sim *sim, const char *path, int noverrides,
+                  char *const *overrides, char *err, size_t errlen);
+
+/** @brief As sim_load_file() for a scene held in a string named @p name. */
+int sim_load_string(Sim *sim, const char *text, const char *name,
+                    char *err, size_t errlen);
+
+/**
+ * @brief Recompute the time step from the current point velocities and
+ *        the scene's CFL factor (call after changing velocities by hand).
+ */
+void sim_set_time_step(Sim *sim);
+
+/**
+ * @brief Take one time step (Tasks 0-8).
+ * @return 0, or non-zero when the run went unstable (see Sim::fail).
+ */
+int sim_step(Sim *sim);
+
+/** @brief Energies and momentum of the points now. */
+Totals sim_totals(const Sim *sim);
+
+/**
+ * @brief Run to the scene's end time writing output into @p outdir.
+ * @param progress print a progress line on standard error
+ * @return 0, 3 when the run went unstable, 2 on an output error.
+ */
+int sim_run(Sim *sim, const char *outdir, int progress);
+
+/** @brief Release everything the simulation holds. */
+void sim_free(Sim *sim);
+
+#endif

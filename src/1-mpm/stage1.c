@@ -1,0 +1,15 @@
+/**
+ * @file stage1.c
+ * @brief Stage 1 installs the three classical stress-update schemes.
+ */
+#include "stage1.h"
+
+/// [stage1_install]
+void stage1_install(Hooks *h)
+{
+    /*                   name    Task 2  Task 6  re-extrapolate (Task 6c) */
+    hooks_add_scheme(h, "usl",  0.0,    1.0,    0);  /* Sulsky et al. 1994 */
+    hooks_add_scheme(h, "musl", 0.0,    1.0,    1);  /* Sulsky et al. 1995 */
+    hooks_add_scheme(h, "usf",  1.0,    0.0,    0);  /* Bardenhagen 2002 */
+}
+/// [stage1_install]

@@ -1,0 +1,68 @@
+/**
+ * @file step.h
+ * @brief The pieces of one MPM time step (the paper's Tasks 0-8), each a
+ *        loop over points or over grid slots.
+ */
+#ifndef MPM_STEP_H
+#define MPM_STEP_H
+
+#include "sim.h"
+
+/** extrapolate(): masses and momenta (eq. 26). */
+#define EXTRAP_MASS 1u
+/** extrapolate(): momenta only, with the stored shape data (eq. 31). */
+#define EXTRAP_MOMENTUM 2u
+/** extrapolate(): internal and external forces (eq. 28). */
+#define EXTRAP_FORCE 4u
+
+/** @brief Task 0: each point's cell and local coordinates for this step. */
+void locate_points(Sim *sim);
+
+/** @brief Tasks 1 and 3: scatter point data to the grid slots of each pair. */
+void extrapolate(Sim *sim, unsigned what);
+
+/** @brief Task 2: boundary conditions on momenta, then v = p / m (eq. 34). */
+void grid_velocities(Sim *sim);
+
+/** @brief Tasks 3-4: total forces (eq. 4, 28), fixed directions, p += dt f
+ *         (eq. 29), and the velocities and accelerations Task 5 reads. */
+void grid_momentum_update(Sim *sim);
+
+/** @brief Task 5: point velocities and positions (eq. 30); 0 or -1 on
+ *         instability (Sim::fail filled). */
+int update_points(Sim *sim);
+
+/** @brief Stress and strain from the nodal velocities (eq. 34-36) over
+ *         dt_star; 0 or -1 on a non-finite stress (Sim::fail filled). */
+int update_stress(Sim *sim, double dt_star);
+
+/**
+ * @brief Elastic stress increment of Hooke's law in the plane (chapter 1,
+ *        exercise "Hooke's law" replaces this function's file).
+ * @param mat  material with its plane stiffnesses prepared
+ * @param dexx strain increment xx
+ * @param deyy strain increment yy
+ * @param dexy tensor shear strain increment xy
+ * @param s    in/out: stress xx, yy, xy
+ */
+void elastic_stress_increment(const Material *mat, double dexx, double deyy,
+                              double dexy, double s[3]);
+
+/** @brief Record the first instability of this step in Sim::fail.
+ *  @return -1, for the caller to return. */
+int step_fail(Sim *sim, int p, const char *quantity, double value);
+
+/** @brief Field slots of the four pairs of point @p p (Task 1's v(p,i)). */
+static inline void pair_slots(const Sim *sim, int p, int slot[4])
+{
+    const Grid *g = &sim->grid;
+    int c = sim->pts.cell[p];
+    slot[0] = c;
+    slot[1] = c + 1;
+    slot[2] = c + g->nnx;
+    slot[3] = c + g->nnx + 1;
+    if (sim->hooks.pair_slots)
+        sim->hooks.pair_slots(sim, p, slot);
+}
+
+#endif

@@ -1,0 +1,47 @@
+/**
+ * @file testkit.h
+ * @brief Helpers shared by the test programs: load a scene with the stages
+ *        of this build, run the mpm program and capture what it says.
+ */
+#ifndef MPM_TESTKIT_H
+#define MPM_TESTKIT_H
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+
+#include "sim.h"
+
+/** Fail the test unless |a - b| <= tol (cmocka 1.1 has no double compare). */
+#define assert_close(a, b, tol)                                                \
+    do {                                                                       \
+        double a_ = (a), b_ = (b), t_ = (tol);                                 \
+        if (!(fabs(a_ - b_) <= t_))                                            \
+            fail_msg("%s = %.17g, expected %.17g within %g", #a, a_, b_, t_);  \
+    } while (0)
+
+/** @brief Load a scene given as text; fail the test with the message if it
+ *         is refused. The caller frees with tk_free(). */
+Sim *tk_load(const char *text);
+
+/** @brief Load a scene file with "key=value" overrides (NULL-ended list). */
+Sim *tk_load_file(const char *path, const char *const *overrides);
+
+/** @brief Try to load a scene file; return 0 or non-zero, message in err. */
+int tk_try_file(const char *path, char *err, size_t errlen);
+
+/** @brief Release a simulation made by tk_load(). */
+void tk_free(Sim *sim);
+
+/** @brief Run "$MPM_BIN args" through the shell, capture stdout and stderr
+ *         into out, and return the exit status. */
+int tk_run_mpm(const char *args, char *out, size_t outlen);
+
+/** @brief Take @p n steps; fail the test if the run goes unstable. */
+void tk_steps(Sim *sim, long n);
+
+#endif
