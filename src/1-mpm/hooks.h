@@ -50,14 +50,17 @@ typedef struct Hooks {
     /** Checks and set-up after the points and the grid exist; write a
      *  message and return non-zero to refuse the scene. */
     int (*prepare)(struct Sim *sim, char *err, size_t errlen);
-    /** Task 1: assign a velocity field to every particle-node pair. */
-    void (*assign_fields)(struct Sim *sim);
+    /** Task 1: assign a velocity field to every particle-node pair;
+     *  non-zero (with Sim::fail filled) stops the run. */
+    int (*assign_fields)(struct Sim *sim);
     /** Map the four pairs of point p (nodes in slot[]) to their field slots. */
     void (*pair_slots)(const struct Sim *sim, int p, int slot[4]);
-    /** Tasks 2, 4 and 6: adjust nodal momenta for contact. */
-    void (*contact)(struct Sim *sim, int task);
-    /** Task 7: move the cracks with the centre-of-mass grid velocity. */
-    void (*move_cracks)(struct Sim *sim);
+    /** Tasks 2, 4 and 6: adjust nodal momenta for contact; non-zero stops
+     *  the run. */
+    int (*contact)(struct Sim *sim, int task);
+    /** Task 7: move the cracks with the centre-of-mass grid velocity;
+     *  non-zero stops the run. */
+    int (*move_cracks)(struct Sim *sim);
     /** Extra columns of history.csv: header (row = NULL) or values. */
     void (*history_columns)(const struct Sim *sim, char *buf, size_t len,
                             int header);
