@@ -144,9 +144,9 @@ static int read_rectangle(SceneReader *r, const config_setting_t *g, Shape *sh)
     if (scene_check_keys(r, g, keys) || scene_pair(r, g, "min", 1, lo) < 0 ||
         scene_pair(r, g, "max", 1, hi) < 0)
         return -1;
-    if (!(hi[0] > lo[0] && hi[1] > lo[1]))
+    if (!(hi[0] >= lo[0] && hi[1] >= lo[1]))   /* a line of nodes is fine */
         return scene_error(r, g, "rectangle",
-                           "max [%g, %g] must exceed min [%g, %g]", hi[0],
+                           "max [%g, %g] must not be below min [%g, %g]", hi[0],
                            hi[1], lo[0], lo[1]);
     sh->kind = SHAPE_RECTANGLE;
     sh->xmin = lo[0];
