@@ -1,0 +1,65 @@
+/**
+ * @file crack_motion.c
+ * @brief Task 7: crack points move as massless material points with the
+ *        centre-of-mass velocity of the nodes (eq. 7 and 32).
+ */
+#include "cracks.h"
+#include "shape.h"
+#include "step.h"
+
+/** Centre-of-mass velocity of node @p n over its fields (eq. 32). */
+static void node_cm_velocity(const Sim *sim, const Cracks *C, int n,
+                             double *vx, double *vy)
+{
+    const Grid *g = &sim->grid;
+    double m = g->m[n], px = g->px[n], py = g->py[n];
+    for (int f = 0; f < 2; f++) {
+        int s = C->node_field[2 * n + f];
+        if (s >= 0) {
+            m += g->m[s];
+            px += g->px[s];
+            py += g->py[s];
+        }
+    }
+    *vx = m > 0 ? px / m : 0.0;
+    *vy = m > 0 ? py / m : 0.0;
+}
+
+/// [cracks_move]
+int cracks_move(Sim *sim)
+{
+    Cracks *C = cracks_of(sim);
+    const Grid *g = &sim->grid;
+    double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
+    for (int k = 0; k < C->ncracks; k++) {
+        Crack *c = &C->crack[k];
+        for (int j = 0; j < c->n; j++) {
+            double xi, eta, S[4], Gx[4], Gy[4], vx = 0, vy = 0;
+            int node[4];
+            int cell = shape_locate(g, c->x[j], c->y[j], &xi, &eta);
+            shape_linear(xi, eta, g->idx, g->idy, S, Gx, Gy);
+            shape_cell_nodes(g, cell, node);
+            for (int a = 0; a < 4; a++) {
+                double nvx, nvy;
+                node_cm_velocity(sim, C, node[a], &nvx, &nvy);
+                vx += S[a] * nvx;
+                vy += S[a] * nvy;
+            }
+            c->x[j] += sim->dt * vx;
+            c->y[j] += sim->dt * vy;
+            if (!(c->x[j] >= g->ox && c->x[j] < xmax && c->y[j] >= g->oy &&
+                  c->y[j] < ymax))
+                return step_fail(sim, -1, "crack point (left the grid)", c->x[j]);
+        }
+        c->xmin = c->xmax = c->x[0];
+        c->ymin = c->ymax = c->y[0];
+        for (int j = 1; j < c->n; j++) {
+            c->xmin = c->x[j] < c->xmin ? c->x[j] : c->xmin;
+            c->xmax = c->x[j] > c->xmax ? c->x[j] : c->xmax;
+            c->ymin = c->y[j] < c->ymin ? c->y[j] : c->ymin;
+            c->ymax = c->y[j] > c->ymax ? c->y[j] : c->ymax;
+        }
+    }
+    return 0;
+}
+/// [cracks_move]

@@ -1,0 +1,59 @@
+/**
+ * @file crack_output.c
+ * @brief Cracks in the output: a ParaView polyline file and a CSV per
+ *        snapshot, and the multi-field node count in history.csv.
+ */
+#include <stdio.h>
+
+#include "cracks.h"
+
+/// [cracks_snapshot]
+void cracks_snapshot(const Sim *sim, const char *dir, int index)
+{
+    const Cracks *C = cracks_of(sim);
+    char path[1200];
+    snprintf(path, sizeof path, "%s/cracks_%05d.csv", dir, index);
+    FILE *f = fopen(path, "w");
+    if (f) {
+        fprintf(f, "crack,point,x,y\n");
+        for (int k = 0; k < C->ncracks; k++)
+            for (int j = 0; j < C->crack[k].n; j++)
+                fprintf(f, "%d,%d,%.12g,%.12g\n", k, j, C->crack[k].x[j],
+                        C->crack[k].y[j]);
+        fclose(f);
+    }
+    snprintf(path, sizeof path, "%s/cracks_%05d.vtp", dir, index);
+    f = fopen(path, "w");
+    if (!f)
+        return;
+    int npts = 0;
+    for (int k = 0; k < C->ncracks; k++)
+        npts += C->crack[k].n;
+    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+               "byte_order=\"LittleEndian\">\n<PolyData>\n<Piece NumberOfPoints=\"%d\" "
+               "NumberOfLines=\"%d\">\n<Points>\n<DataArray type=\"Float64\" "
+               "NumberOfComponents=\"3\" format=\"ascii\">\n", npts, C->ncracks);
+    for (int k = 0; k < C->ncracks; k++)
+        for (int j = 0; j < C->crack[k].n; j++)
+            fprintf(f, "%.12g %.12g 0\n", C->crack[k].x[j], C->crack[k].y[j]);
+    fprintf(f, "</DataArray>\n</Points>\n<Lines>\n<DataArray type=\"Int32\" "
+               "Name=\"connectivity\" format=\"ascii\">\n");
+    for (int j = 0; j < npts; j++)
+        fprintf(f, "%d\n", j);
+    fprintf(f, "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n");
+    for (int k = 0, off = 0; k < C->ncracks; k++) {
+        off += C->crack[k].n;
+        fprintf(f, "%d\n", off);
+    }
+    fprintf(f, "</DataArray>\n</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n");
+    fclose(f);
+}
+/// [cracks_snapshot]
+
+void cracks_history(const Sim *sim, char *buf, size_t len, int header)
+{
+    if (header)
+        snprintf(buf, len, ",multi_field_nodes");
+    else
+        snprintf(buf, len, ",%d", cracks_multi_field_nodes(sim));
+}
