@@ -19,6 +19,8 @@ CFLAGS_asan := $(WARN) -O1 -g -fno-omit-frame-pointer \
 LDFLAGS_release :=
 LDFLAGS_asan := -fsanitize=address,undefined
 LIBS := -lconfig -lm
+# tests link cmocka and LAPACKE (the reference finite element solver)
+TEST_LIBS := -lcmocka -llapacke $(LIBS)
 
 STAGE_DIRS := $(sort $(wildcard src/[1-9]-*))
 stage_num = $(firstword $(subst -, ,$(notdir $(1))))
@@ -36,6 +38,7 @@ OBJ_$(1)_$(2) := $$(patsubst src/%.c,$$(B_$(1)_$(2))/obj/%.o,\
                    $$(foreach d,$$(call dirs_upto,$(2)),$$(wildcard $$(d)/*.c)))
 UNIT_$(1)_$(2) := $$(foreach d,$$(call tests_upto,$(2)),$$(wildcard $$(d)/test_*.c))
 SCENE_$(1)_$(2) := $$(if $$(filter release,$(1)),$$(foreach d,$$(call tests_upto,$(2)),$$(wildcard $$(d)/scene_*.c)))
+SUPPORT_$(1)_$(2) := $$(patsubst tests/support/%.c,$$(B_$(1)_$(2))/tests/support/%.o,$$(wildcard tests/support/*.c))
 TESTS_$(1)_$(2) := $$(patsubst tests/%.c,$$(B_$(1)_$(2))/tests/%,$$(UNIT_$(1)_$(2)) $$(SCENE_$(1)_$(2)))
 
 $$(B_$(1)_$(2))/obj/%.o: src/%.c
@@ -57,8 +60,8 @@ $$(B_$(1)_$(2))/tests/%.o: tests/%.c
 	@mkdir -p $$(@D)
 	$$(CC) $$(CFLAGS_$(1)) -DMPM_STAGE=$(2) $$(INC_$(1)_$(2)) -Itests/support -MMD -MP -c $$< -o $$@
 
-$$(B_$(1)_$(2))/tests/%: $$(B_$(1)_$(2))/tests/%.o $$(B_$(1)_$(2))/tests/support/testkit.o $$(B_$(1)_$(2))/libmpm.a
-	$$(CC) $$(LDFLAGS_$(1)) $$^ -lcmocka $$(LIBS) -o $$@
+$$(B_$(1)_$(2))/tests/%: $$(B_$(1)_$(2))/tests/%.o $$(SUPPORT_$(1)_$(2)) $$(B_$(1)_$(2))/libmpm.a
+	$$(CC) $$(LDFLAGS_$(1)) $$^ $$(TEST_LIBS) -o $$@
 
 -include $$(OBJ_$(1)_$(2):.o=.d) $$(wildcard $$(B_$(1)_$(2))/tests/*/*.d)
 endef
@@ -92,9 +95,9 @@ build/exercises/$(1)/$(2)/solution.o: $(3)
 	@mkdir -p $$(@D)
 	$$(CC) $$(CFLAGS_release) $$(INC_release_$(call ex_stage,$(1))) -c $$< -o $$@
 build/exercises/$(1)/$(2)/%: build/stage$(call ex_stage,$(1))/tests/$(firstword $(subst /, ,$(1)))/%.o \
-        build/exercises/$(1)/$(2)/solution.o build/stage$(call ex_stage,$(1))/tests/support/testkit.o \
+        build/exercises/$(1)/$(2)/solution.o $$(SUPPORT_release_$(call ex_stage,$(1))) \
         build/stage$(call ex_stage,$(1))/libmpm.a
-	$$(CC) $$^ -lcmocka $$(LIBS) -o $$@
+	$$(CC) $$^ $$(TEST_LIBS) -o $$@
 endef
 $(foreach e,$(EXERCISES),$(eval $(call EXERCISE_RULES,$(e),reference,$(shell cat exercises/$(e)/replaces))))
 $(foreach e,$(EXERCISES),$(eval $(call EXERCISE_RULES,$(e),stub,exercises/$(e)/stub.c)))

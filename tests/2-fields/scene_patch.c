@@ -6,10 +6,12 @@
  *
  * The upper half of the full run must equal the half run at every step.
  * Bitwise equality is out of reach: at the ligament nodes on the mid-plane
- * the full run adds the lower half's contributions, whose y parts cancel
- * the upper half's only as far as the two halves stay exact mirror images,
- * and a mirrored position 36 - y rounds differently from y after the first
- * position update.  So each quantity's difference is bounded by 1e-12 times
+ * the full run adds the lower half's contributions to the upper half's.
+ * The scene puts the mid-plane at y = 0, so the lower half stays the exact
+ * mirror image of the upper half (negation is exact in floating point), but
+ * the sums run in particle order, lower rows first, and floating-point
+ * addition in another order rounds differently.  So each quantity's
+ * difference is bounded by 1e-12 times
  * the largest value that quantity takes during the run (round-off scales
  * with the values that produced it; velocities decay by damping, so a bound
  * relative to their final, tiny values would measure the damping instead).
