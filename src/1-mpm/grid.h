@@ -16,6 +16,7 @@
 /** Bit set in Grid::fixed when a node's y velocity is held at zero. */
 #define GRID_FIX_Y 2u
 
+/// [grid]
 /** Regular background grid and its nodal data (structure of arrays). */
 typedef struct Grid {
     double ox;        /**< x of the lower-left grid corner */
@@ -43,9 +44,17 @@ typedef struct Grid {
     double *ay;       /**< nodal y acceleration per slot */
     unsigned char *fixed; /**< per node: GRID_FIX_X | GRID_FIX_Y */
 } Grid;
+/// [grid]
 
 /**
  * @brief Allocate a grid of ncx x ncy cells of size dx x dy from (ox, oy).
+ * @param g   the grid to fill
+ * @param ox  x of the lower-left corner
+ * @param oy  y of the lower-left corner
+ * @param dx  cell width
+ * @param dy  cell height
+ * @param ncx cells along x
+ * @param ncy cells along y
  * @param extra_slots slots reserved beyond one per node (0 for one field)
  * @return 0 on success, -1 when memory is exhausted.
  */

@@ -37,6 +37,7 @@ typedef struct Refusal {
     const char *stage;  /**< words naming the stage that adds it */
 } Refusal;
 
+/// [hooks]
 /** Hook table of one build. */
 typedef struct Hooks {
     UpdateScheme schemes[HOOKS_MAX];  /**< registered stress-update schemes */
@@ -69,6 +70,7 @@ typedef struct Hooks {
     /** Release the stages' state. */
     void (*release)(struct Sim *sim);
 } Hooks;
+/// [hooks]
 
 /** @brief Register a stress-update scheme. @return 0, or -1 when full. */
 int hooks_add_scheme(Hooks *h, const char *name, double before, double after,

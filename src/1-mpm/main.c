@@ -32,6 +32,8 @@ static void usage(FILE *f)
         mpm_stage());
 }
 
+/** Parse the command line, load the scene with this build's stages, run
+ *  it; the exit status is that of sim_run(), or 1 for bad input. */
 int main(int argc, char **argv)
 {
     const char *scene = NULL, *outdir = "output";

@@ -22,6 +22,9 @@ void output_history_row(Sim *sim, FILE *f);
 /**
  * @brief Write snapshot @p index: particles_NNNNN.vtu, grid_NNNNN.csv, the
  *        stages' extras, and rewrite particles.pvd to list snapshots 0..index.
+ * @param sim   the simulation
+ * @param dir   output directory
+ * @param index snapshot number, 0 for the initial state
  * @param times times of snapshots 0..index
  * @return 0, or -1 when a file cannot be written.
  */

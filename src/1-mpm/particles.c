@@ -7,9 +7,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+/** Addresses of every double array of @p P, for loops over all of them. */
 #define DOUBLE_ARRAYS(P) \
     { &(P)->x, &(P)->y, &(P)->vx, &(P)->vy, &(P)->m, &(P)->vol, &(P)->sxx, \
       &(P)->syy, &(P)->sxy, &(P)->exx, &(P)->eyy, &(P)->exy, &(P)->xi, &(P)->eta }
+/** Addresses of every int array of @p P. */
 #define INT_ARRAYS(P) { &(P)->mat, &(P)->body, &(P)->cell }
 
 int particles_init(Particles *P, int cap)

@@ -5,6 +5,7 @@
 #ifndef MPM_PARTICLES_H
 #define MPM_PARTICLES_H
 
+/// [particles]
 /** All material points of a run; index p runs over 0 .. n-1 in every array. */
 typedef struct Particles {
     int n;          /**< number of points */
@@ -27,6 +28,7 @@ typedef struct Particles {
     double *xi;     /**< Task 0: local x coordinate in that cell */
     double *eta;    /**< Task 0: local y coordinate in that cell */
 } Particles;
+/// [particles]
 
 /** @brief Allocate room for @p cap points (n = 0). @return 0, or -1 on failure. */
 int particles_init(Particles *P, int cap);

@@ -80,6 +80,8 @@ Totals sim_totals(const Sim *sim);
 
 /**
  * @brief Run to the scene's end time writing output into @p outdir.
+ * @param sim      a loaded simulation
+ * @param outdir   output directory, created if missing
  * @param progress print a progress line on standard error
  * @return 0, 3 when the run went unstable, 2 on an output error.
  */

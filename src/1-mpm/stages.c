@@ -11,6 +11,7 @@
 #include "stage1.h"
 
 #ifndef MPM_STAGE
+/** Last stage of this build; the Makefile passes -DMPM_STAGE=N. */
 #define MPM_STAGE 1
 #endif
 #if MPM_STAGE >= 2

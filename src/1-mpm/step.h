@@ -52,6 +52,7 @@ void elastic_stress_increment(const Material *mat, double dexx, double deyy,
  *  @return -1, for the caller to return. */
 int step_fail(Sim *sim, int p, const char *quantity, double value);
 
+/// [pair_slots]
 /** @brief Field slots of the four pairs of point @p p (Task 1's v(p,i)). */
 static inline void pair_slots(const Sim *sim, int p, int slot[4])
 {
@@ -64,5 +65,6 @@ static inline void pair_slots(const Sim *sim, int p, int slot[4])
     if (sim->hooks.pair_slots)
         sim->hooks.pair_slots(sim, p, slot);
 }
+/// [pair_slots]
 
 #endif

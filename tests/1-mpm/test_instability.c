@@ -1,0 +1,250 @@
+/**
+ * @file test_instability.c
+ * @brief USL made unstable on purpose (tests/1-mpm/scenes/usl_unstable.cfg):
+ *        the stop names step, particle and quantity, the program exits 3 and
+ *        leaves readable output; MUSL and USF stay stable on the same set-up.
+ *
+ * The set-up is the single-particle oscillator of test_oscillator.c with the
+ * point at x_p = 1/32 of the cell, far from the cell's free nodes.  Those
+ * nodes get mass m x_p (S -> 0) but the full force V sigma / L (G finite), so
+ * USL's updated nodal velocity v + dt f / (m x_p) overshoots; its step map on
+ * (v, eps L) has trace 2 - h/x_p and determinant 1 - h (1/x_p - 1), with
+ * h = (omega dt)^2 = cfl^2 = 0.25 here: eigenvalues
+ * lambda = (tr -+ sqrt(tr^2 - 4 det)) / 2 = -6.97 and 0.97.  The strain grows
+ * by |lambda| a step until the point is thrown out of the grid.
+ *
+ * MUSL (v' = v - dt k u, u' = u + dt v') and USF (u' = u + dt v,
+ * v' = v - dt k u') are symplectic Euler steps whatever x_p: they conserve
+ * H = E -+ (1/2) dt k u v exactly, and |dt k u v| <= sqrt(h) E, so with
+ * u(0) = 0 the energy E = K + U stays within E0 / (1 +- sqrt(h) / 2).
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "testkit.h"
+
+static const char *const SCENE = "tests/1-mpm/scenes/usl_unstable.cfg";
+static const double XP = 1.0 / 32.0;
+static const double PI = 3.14159265358979323846;
+
+static Sim *load(const char *scheme)
+{
+    char ov[64];
+    snprintf(ov, sizeof ov, "run.update=%s", scheme);
+    const char *const overrides[] = {ov, NULL};
+    Sim *sim = tk_load_file(SCENE, overrides);
+    assert_int_equal(sim->pts.n, 1);
+    assert_close(sim->pts.x[0], XP, 1e-15);
+    return sim;
+}
+
+/** sim_step() reports the failure with step, particle and quantity. */
+static void usl_stops(void **state)
+{
+    (void)state;
+    Sim *sim = load("usl");
+    long n = sim->nsteps;
+    int rc = 0;
+    while (sim->step < n && (rc = sim_step(sim)) == 0)
+        ;
+    assert_int_not_equal(rc, 0);
+    print_message("usl: stopped at step %ld of %ld (t = %g ms): particle %d, %s = %g\n",
+                  sim->fail.step, n, sim->fail.time, sim->fail.particle,
+                  sim->fail.quantity, sim->fail.value);
+    assert_true(sim->fail.step >= 1 && sim->fail.step < n);
+    assert_int_equal(sim->fail.step, sim->step);       /* the step that failed */
+    assert_close(sim->fail.time, sim->t, 0.0);
+    assert_int_equal(sim->fail.particle, 0);
+    assert_non_null(sim->fail.quantity);
+    assert_true(strstr(sim->fail.quantity, "velocity") ||
+                strstr(sim->fail.quantity, "position") ||
+                strstr(sim->fail.quantity, "stress"));
+    tk_free(sim);
+}
+
+/** The growth rate is USL's eigenvalue: |eps| x 6.97 a step. */
+static void usl_growth_rate(void **state)
+{
+    (void)state;
+    Sim *sim = load("usl");
+    sim->pts.vx[0] = 1e-20;   /* eps ~ 1e-21 x 7^15: the point stays put */
+    sim_set_time_step(sim);
+    double h = 4.0 * PI * PI * sim->dt * sim->dt;
+    double tr = 2.0 - h / XP, det = 1.0 - h * (1.0 / XP - 1.0);
+    double lambda = 0.5 * (tr - sqrt(tr * tr - 4.0 * det));
+    tk_steps(sim, 10);                       /* the other mode (0.97) is gone */
+    double e10 = fabs(sim->pts.exx[0]);
+    for (int k = 0; k < 5; k++) {            /* lambda < 0: eps flips sign */
+        double before = sim->pts.exx[0];
+        tk_steps(sim, 1);
+        assert_true(before * sim->pts.exx[0] < 0);
+    }
+    double rate = pow(fabs(sim->pts.exx[0]) / e10, 1.0 / 5.0);
+    print_message("usl: |eps| grows by %.6f a step; step map eigenvalue %.6f "
+                  "(relative difference %.1e)\n", rate, lambda,
+                  rate / fabs(lambda) - 1);
+    /* the 0.97 mode decays relative to this one by 7^-10 ~ 3e-9 */
+    assert_close(rate, fabs(lambda), 1e-6 * fabs(lambda));
+    tk_free(sim);
+}
+
+/** MUSL and USF run the same scene to its end with bounded energy. */
+static void stable(const char *scheme)
+{
+    Sim *sim = load(scheme);
+    Totals t0 = sim_totals(sim);
+    const double E0 = t0.kinetic + t0.strain;
+    const double h = 4.0 * PI * PI * sim->dt * sim->dt;
+    double lo = 1, hi = 1;
+    long n = sim->nsteps;
+    while (sim->step < n) {
+        tk_steps(sim, 1);
+        Totals t = sim_totals(sim);
+        double E = (t.kinetic + t.strain) / E0;
+        lo = fmin(lo, E);
+        hi = fmax(hi, E);
+    }
+    print_message("%-4s: %ld steps, E/E0 in [%.6f, %.6f]; bounds [%.6f, %.6f]\n",
+                  scheme, n, lo, hi, 1 / (1 + sqrt(h) / 2), 1 / (1 - sqrt(h) / 2));
+    assert_true(hi <= (1 + 1e-9) / (1 - sqrt(h) / 2));
+    assert_true(lo >= (1 - 1e-9) / (1 + sqrt(h) / 2));
+    tk_free(sim);
+}
+
+static void musl_stable(void **state) { (void)state; stable("musl"); }
+static void usf_stable(void **state) { (void)state; stable("usf"); }
+
+/** Read a whole file into a NUL-terminated buffer (caller frees). */
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        fail_msg("cannot open %s", path);
+    fseek(f, 0, SEEK_END);
+    long len = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *buf = malloc((size_t)len + 1);
+    assert_non_null(buf);
+    assert_int_equal(fread(buf, 1, (size_t)len, f), (size_t)len);
+    buf[len] = '\0';
+    fclose(f);
+    return buf;
+}
+
+static int ends_with(const char *s, const char *tail)
+{
+    size_t a = strlen(s), b = strlen(tail);
+    return a >= b && strcmp(s + a - b, tail) == 0;
+}
+
+/** history.csv: a header and complete rows of numbers; returns the last
+ *  row's step. */
+static long check_history(const char *path)
+{
+    char *text = slurp(path);
+    assert_true(ends_with(text, "\n"));
+    char *save = NULL, *line = strtok_r(text, "\n", &save);
+    assert_non_null(line);
+    assert_true(strncmp(line, "step,time,kinetic,strain,total", 30) == 0);
+    int fields = 1;
+    for (const char *c = line; *c; c++)
+        fields += *c == ',';
+    long rows = 0, last = -1;
+    while ((line = strtok_r(NULL, "\n", &save)) != NULL) {
+        int k = 0;
+        for (char *c = line;; k++) {
+            char *end;
+            double v = strtod(c, &end);
+            assert_true(end != c && isfinite(v));
+            if (k == 0)
+                last = (long)v;
+            if (*end != ',') {
+                assert_int_equal(*end, '\0');
+                break;
+            }
+            c = end + 1;
+        }
+        assert_int_equal(k + 1, fields);
+        rows++;
+    }
+    assert_int_equal(rows, last + 1);        /* one row a step, from step 0 */
+    free(text);
+    return last;
+}
+
+/** particles.pvd: a closed collection of closed .vtu files. */
+static int check_pvd(const char *dir)
+{
+    char path[1024];
+    int w = snprintf(path, sizeof path, "%s/particles.pvd", dir);
+    assert_true(w > 0 && w < (int)sizeof path);
+    char *text = slurp(path);
+    assert_true(ends_with(text, "</VTKFile>\n"));
+    int files = 0;
+    for (char *c = strstr(text, "file=\""); c; c = strstr(c, "file=\"")) {
+        c += 6;
+        char *q = strchr(c, '"');
+        assert_non_null(q);
+        w = snprintf(path, sizeof path, "%s/%.*s", dir, (int)(q - c), c);
+        assert_true(w > 0 && w < (int)sizeof path);
+        char *vtu = slurp(path);
+        assert_true(ends_with(vtu, "</VTKFile>\n"));
+        free(vtu);
+        files++;
+    }
+    free(text);
+    return files;
+}
+
+/** The program: exit 3, a message naming step, particle and quantity, and
+ *  the output written so far readable. */
+static void program_exit_status(void **state)
+{
+    (void)state;
+    Sim *sim = load("usl");
+    while (sim_step(sim) == 0)
+        ;
+    char expect_step[64], expect_particle[64];
+    snprintf(expect_step, sizeof expect_step, "step %ld", sim->fail.step);
+    snprintf(expect_particle, sizeof expect_particle, "particle %d", sim->fail.particle);
+    char quantity[128];
+    snprintf(quantity, sizeof quantity, "%s", sim->fail.quantity);
+    long fail_step = sim->fail.step;
+    tk_free(sim);
+
+    char dir[] = "/tmp/mpm_instability_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    char args[1024], out[4096];
+    snprintf(args, sizeof args, "%s -o %s/out", SCENE, dir);
+    int rc = tk_run_mpm(args, out, sizeof out);
+    print_message("mpm said: %s", out);
+    assert_int_equal(rc, 3);
+    assert_non_null(strstr(out, expect_step));
+    assert_non_null(strstr(out, expect_particle));
+    assert_non_null(strstr(out, quantity));
+
+    char path[512];
+    snprintf(path, sizeof path, "%s/out/history.csv", dir);
+    assert_int_equal(check_history(path), fail_step);  /* every step before */
+    snprintf(path, sizeof path, "%s/out", dir);
+    int snaps = check_pvd(path);
+    print_message("history.csv complete to step %ld; particles.pvd lists %d "
+                  "closed .vtu files\n", fail_step, snaps);
+    assert_true(snaps >= 2);                 /* t = 0 and at least one more */
+
+    snprintf(args, sizeof args, "rm -rf '%s'", dir);
+    assert_int_equal(system(args), 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(usl_stops),
+        cmocka_unit_test(usl_growth_rate),
+        cmocka_unit_test(musl_stable),
+        cmocka_unit_test(usf_stable),
+        cmocka_unit_test(program_exit_status),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
