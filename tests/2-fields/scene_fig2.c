@@ -27,7 +27,7 @@
 /** MPM: sigma_xx at the mid-plane nodes after damping to the static state. */
 static void mpm_midplane(double sxx[NX + 1], double *opening)
 {
-    Sim *sim = tk_load_file("tests/2-fields/scenes/dcb_full.cfg", NULL);
+    Sim *sim = tk_load_file("figures/fig1/dcb_full.cfg", NULL);
     int tip = -1;
     for (int p = 0; p < sim->pts.n; p++)      /* upper arm, loaded end, face */
         if (sim->pts.y[p] > 0 && (tip < 0 || sim->pts.x[p] < sim->pts.x[tip] ||
@@ -62,7 +62,7 @@ static void mpm_midplane(double sxx[NX + 1], double *opening)
 /** FEA of the upper half, sampled like the MPM. */
 static void fea_midplane(double sxx[NX + 1], double *opening)
 {
-    Sim *sim = tk_load_file("tests/2-fields/scenes/dcb_half.cfg", NULL);
+    Sim *sim = tk_load_file("figures/fig1/dcb_half.cfg", NULL);
     const Particles *P = &sim->pts;
     const Material *mat = &sim->scene.mat[0];
     Q4Model q;

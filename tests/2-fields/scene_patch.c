@@ -25,8 +25,8 @@ enum { NQ = 10 };
 static void full_run_equals_half_run(void **state)
 {
     (void)state;
-    Sim *full = tk_load_file("tests/2-fields/scenes/dcb_full.cfg", NULL);
-    Sim *half = tk_load_file("tests/2-fields/scenes/dcb_half.cfg", NULL);
+    Sim *full = tk_load_file("figures/fig1/dcb_full.cfg", NULL);
+    Sim *half = tk_load_file("figures/fig1/dcb_half.cfg", NULL);
     int n = half->pts.n, off = full->pts.n - n;
     assert_int_equal(full->pts.n, 2 * n);
     assert_true(full->dt == half->dt && full->nsteps == half->nsteps);
