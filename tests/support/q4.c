@@ -10,6 +10,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+/** Entry K(r, c), r <= c, of a symmetric matrix in LAPACK's upper band
+ *  storage @p ab (column major) with half bandwidth @p kd. */
+#define KAB(ab, kd, r, c) \
+    (ab)[(size_t)((kd) + (r) - (c)) + (size_t)(c) * (size_t)((kd) + 1)]
+
 int q4_init(Q4Model *q, int nx, int ny, double x0, double y0, double dx,
             double dy, double t, double E, double nu)
 {
@@ -86,8 +91,6 @@ int q4_solve(Q4Model *q)
     double *ab = calloc((size_t)(kd + 1) * (size_t)n, sizeof(double));
     if (!ab)
         return -1;
-    /* upper band, column major: K(r, c) with r <= c at ab[kd + r - c + c*(kd+1)] */
-#define KAB(r, c) ab[(size_t)(kd + (r) - (c)) + (size_t)(c) * (size_t)(kd + 1)]
     double c = q->E / (1 - q->nu * q->nu);
     double D[3][3] = {{c, c * q->nu, 0}, {c * q->nu, c, 0},
                       {0, 0, c * (1 - q->nu) / 2}};
@@ -123,7 +126,7 @@ int q4_solve(Q4Model *q)
                 for (int s = 0; s < 8; s++) {
                     int R = 2 * node[r / 2] + r % 2, S = 2 * node[s / 2] + s % 2;
                     if (R <= S)
-                        KAB(R, S) += Ke[r][s];
+                        KAB(ab, kd, R, S) += Ke[r][s];
                 }
         }
     /* fixed dofs: zero row and column, unit diagonal, zero load */
@@ -131,13 +134,12 @@ int q4_solve(Q4Model *q)
         if (!q->fix[d])
             continue;
         for (int e = d - kd < 0 ? 0 : d - kd; e <= d; e++)
-            KAB(e, d) = 0;
+            KAB(ab, kd, e, d) = 0;
         for (int e = d; e <= d + kd && e < n; e++)
-            KAB(d, e) = 0;
-        KAB(d, d) = 1;
+            KAB(ab, kd, d, e) = 0;
+        KAB(ab, kd, d, d) = 1;
         q->f[d] = 0;
     }
-#undef KAB
     memcpy(q->u, q->f, sizeof(double) * (size_t)n);
     int info = (int)LAPACKE_dpbsv(LAPACK_COL_MAJOR, 'U', n, kd, 1, ab, kd + 1,
                                   q->u, n);
