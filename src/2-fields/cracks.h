@@ -24,6 +24,7 @@ typedef struct Crack {
     int line;       /**< scene-file line, for messages */
 } Crack;
 
+/// [cracks_state]
 /** Stage 2's state: the cracks and this step's field assignment. */
 typedef struct Cracks {
     int ncracks;         /**< number of cracks */
@@ -33,6 +34,7 @@ typedef struct Cracks {
     int *touched;        /**< nodes given extra fields this step */
     int ntouched;        /**< how many */
 } Cracks;
+/// [cracks_state]
 
 /** @brief Stage 2's state of @p sim (NULL when the scene has no crack). */
 static inline Cracks *cracks_of(const Sim *sim)
