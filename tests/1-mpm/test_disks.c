@@ -28,7 +28,7 @@
  * - Rebound.  Nothing in conventional MPM bonds the points of two bodies:
  *   while they share nodes they share velocities, but their stresses come
  *   from their own strains, so the elastic rebound pushes them apart as in
- *   Sulsky et al. 1994 (their Fig. 6 shows the disks separating).  Asserted:
+ *   in Sulsky et al.'s 1994 example.  Asserted:
  *   at the end no node is shared, each disk's mean velocity has reversed,
  *   and their translation holds no more than the kinetic energy left.
  */
