@@ -72,12 +72,17 @@
  * per ms (period 160 ms, as an undamped run shows).  Eq. 4's damping
  * -kappa p is critical for that mode at kappa = 2 omega_1 = 0.078; a touch
  * below, kappa = 0.07, leaves every mode decaying at least as
- * exp(-0.035 t), so 450 ms (load ramped over 20 ms) brings the transient
- * below 1e-6 of the static state.  The test checks the static state before
+ * exp(-0.035 t), so 400 ms (load ramped over 20 ms) brings the transient
+ * to about 1e-6 of the static state.  Time step 0.8 of the stable one
+ * (MUSL is stable below 1), to keep the finest grid near half a minute.
+ * The test checks the static state before
  * measuring: the opening changes by less than 1e-4 of itself over the last
  * tenth of the run, the kinetic energy of the points is below 1e-5 of the
  * strain energy (a first-mode motion of that energy would have an amplitude
- * of sqrt(1e-5) = 0.3 % of the opening), and the strain energy equals half
+ * of sqrt(1e-5) = 0.3 % of the opening; what remains is velocity noise of
+ * the points left by cell crossings while loading, which the grid barely
+ * sees: the kinetic energy of the nodal momenta is printed beside it), and
+ * the strain energy equals half
  * the work of the load, U = P delta / 2 (Clapeyron; exact for a linear
  * static discrete system), within 0.1 %.
  */
@@ -132,7 +137,7 @@ static Result run_half_dcb(double h)
     int nx = (int)lround(108.0 / h), ny = (int)lround(26.0 / h);
     snprintf(text, sizeof text,
         "grid = { origin = [-4.0, -4.0]; cells = [%d, %d]; cell_size = [%#.17g, %#.17g]; };\n"
-        "run = { time = 450.0; cfl = 0.5; update = \"musl\"; damping = 0.07;\n"
+        "run = { time = 400.0; cfl = 0.8; update = \"musl\"; damping = 0.07;\n"
         "        plane = \"stress\"; snapshots = 0; };\n"
         "materials = ( { name = \"soft\"; E = %#.17g; nu = %#.17g; rho = 1.5e-3; } );\n"
         "bodies = ( { name = \"arm\"; material = \"soft\"; thickness = 1.0;\n"
