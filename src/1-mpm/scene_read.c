@@ -20,6 +20,9 @@ int scene_error(SceneReader *r, const config_setting_t *s, const char *key,
     int used;
     if (line > 0)
         used = snprintf(r->err, r->errlen, "%s:%d: %s: ", r->file, line, key);
+    else if (s && !config_setting_is_root(s))  /* added by an override */
+        used = snprintf(r->err, r->errlen, "%s: %s (set on the command line): ",
+                        r->file, key);
     else
         used = snprintf(r->err, r->errlen, "%s: %s: ", r->file, key);
     if (used < 0 || (size_t)used >= r->errlen)

@@ -27,10 +27,10 @@
  *   both.  USL is reported only: the chapter shows its strain-energy spikes.
  * - Rebound.  Nothing in conventional MPM bonds the points of two bodies:
  *   while they share nodes they share velocities, but their stresses come
- *   from their own strains, so the elastic rebound pushes them apart as in
- *   Sulsky et al. 1994 (their Fig. 6 shows the disks separating).  Asserted:
- *   at the end no node is shared, each disk's mean velocity has reversed,
- *   and their translation holds no more than the kinetic energy left.
+ *   from their own strains, so the elastic rebound pushes them apart, as in
+ *   Sulsky et al.'s 1994 example.  Asserted: at the end no node is shared,
+ *   each disk's mean velocity has reversed, and their translation holds no
+ *   more than the kinetic energy left.
  */
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,0 +1,172 @@
+/**
+ * @file test_bad_input.c
+ * @brief Malformed scenes and overrides are refused, naming the file, the
+ *        line and the problem, with exit status 1 and no crash.
+ *
+ * Every file in tests/1-mpm/bad/ is one malformed scene.  Its header says
+ * what the refusal must contain:
+ *   # expect: <substring of the message>
+ *   # refused-before-stage: N    (optional: only builds of stage < N refuse
+ *                                 it, because stage N adds the feature)
+ * and the offending line carries the comment "<- here"; the message must
+ * start with "<file>:<that line>:".  The program (MPM_BIN; the sanitizer
+ * build under make check's asan group) and the library (tk_try_file) must
+ * both refuse it.
+ */
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "testkit.h"
+
+#ifndef MPM_STAGE
+#define MPM_STAGE 1
+#endif
+
+#define BAD_DIR "tests/1-mpm/bad"
+#define OUT_DIR "build/test-bad-input-out"  /* written only if a scene is wrongly accepted */
+
+/** What a bad scene's header and marker say. */
+typedef struct BadCase {
+    char path[512];
+    char expect[256];
+    int before_stage;   /* 0: refused by every stage */
+    int line;           /* line carrying "<- here" */
+} BadCase;
+
+static void read_case(const char *name, BadCase *c)
+{
+    char buf[1024];
+    if (snprintf(c->path, sizeof c->path, "%s/%s", BAD_DIR, name) >= (int)sizeof c->path)
+        fail_msg("file name too long: %s", name);
+    c->expect[0] = '\0';
+    c->before_stage = 0;
+    c->line = 0;
+    FILE *f = fopen(c->path, "r");
+    assert_non_null(f);
+    for (int n = 1; fgets(buf, sizeof buf, f); n++) {
+        buf[strcspn(buf, "\n")] = '\0';
+        if (strncmp(buf, "# expect: ", 10) == 0 &&
+            snprintf(c->expect, sizeof c->expect, "%s", buf + 10) >= (int)sizeof c->expect)
+            fail_msg("%s:%d: expected text too long", c->path, n);
+        else if (strncmp(buf, "# refused-before-stage: ", 24) == 0)
+            c->before_stage = atoi(buf + 24);
+        if (strstr(buf, "<- here"))
+            c->line = n;
+    }
+    fclose(f);
+    if (!c->expect[0] || c->line == 0)
+        fail_msg("%s: needs a '# expect: ...' line and a '<- here' marker", c->path);
+}
+
+static int by_name(const void *a, const void *b)
+{
+    return strcmp((const char *)a, (const char *)b);
+}
+
+/** Names of the .cfg files in BAD_DIR, sorted; returns how many. */
+static int list_cases(char names[][256], int max)
+{
+    DIR *d = opendir(BAD_DIR);
+    assert_non_null(d);
+    int n = 0;
+    const struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        size_t len = strlen(e->d_name);
+        if (len > 4 && strcmp(e->d_name + len - 4, ".cfg") == 0) {
+            assert_true(n < max);
+            snprintf(names[n++], 256, "%s", e->d_name);
+        }
+    }
+    closedir(d);
+    qsort(names, (size_t)n, sizeof names[0], by_name);
+    return n;
+}
+
+static void check_message(const char *who, const BadCase *c, const char *msg)
+{
+    char where[600];
+    snprintf(where, sizeof where, "%s:%d: ", c->path, c->line);
+    if (!strstr(msg, where))
+        fail_msg("%s %s: message does not name %s: %s", who, c->path, where, msg);
+    if (!strstr(msg, c->expect))
+        fail_msg("%s %s: message lacks \"%s\": %s", who, c->path, c->expect, msg);
+}
+
+static void every_bad_scene_is_refused(void **state)
+{
+    (void)state;
+    static char names[64][256];
+    int n = list_cases(names, 64), checked = 0;
+    assert_true(n >= 20);                     /* the set is all there */
+    for (int k = 0; k < n; k++) {
+        BadCase c;
+        read_case(names[k], &c);
+        if (c.before_stage && MPM_STAGE >= c.before_stage)
+            continue;                         /* this build has the feature */
+        char args[1024], out[4096], err[1024];
+        snprintf(args, sizeof args, "%s -q -o %s", c.path, OUT_DIR);
+        int rc = tk_run_mpm(args, out, sizeof out);
+        if (rc != 1)
+            fail_msg("mpm %s: exit status %d, expected 1 (bad input): %s",
+                     c.path, rc, out);
+        if (strncmp(out, "mpm: ", 5) != 0 || strchr(out, '\n') != out + strlen(out) - 1)
+            fail_msg("mpm %s: expected one line \"mpm: ...\", got: %s", c.path, out);
+        check_message("mpm", &c, out);
+        if (tk_try_file(c.path, err, sizeof err) == 0)
+            fail_msg("library: %s was accepted", c.path);
+        check_message("library", &c, err);
+        checked++;
+    }
+    printf("  %d of %d bad scenes checked in a stage-%d build\n", checked, n, MPM_STAGE);
+    assert_true(checked >= n - 3);            /* 3 are refused by early stages only */
+}
+
+/** The cfl > 1 scene loads once it insists, with the step it asked for. */
+static void cfl_above_one_accepted_when_insisted(void **state)
+{
+    (void)state;
+    static const char *const insist[] = {"run.allow_cfl_above_one=true", NULL};
+    Sim *sim = tk_load_file(BAD_DIR "/cfl_above_one.cfg", insist);
+    const Material *m = &sim->scene.mat[0];
+    assert_close(sim->scene.run.cfl, 1.5, 0.0);
+    /* points at rest: dt = cfl * cell / c, c = sqrt(c11 / rho) */
+    assert_close(sim->dt, 1.5 * 1.0 / sqrt(m->c11 / m->rho), 1e-15);
+    tk_free(sim);
+}
+
+/** Overrides on the command line that cannot apply are refused, naming the
+ *  override or the key it set. */
+static void bad_overrides_are_refused(void **state)
+{
+    (void)state;
+    static const char *const cases[][2] = {
+        {"nosuch.key=1", "override \"nosuch.key=1\": no group \"nosuch\""},
+        {"=5", "override \"=5\": expected key.path=value"},
+        {"run.tme=5", "tme (set on the command line): unknown key"},
+        {"run.cfl=fast", "cfl (set on the command line): expected a number"},
+        {"grid.cells=5", "cells (set on the command line): expected two numbers"},
+        {"run.time=-1", "time (set on the command line): -1 must be > 0"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char args[1024], out[4096];
+        snprintf(args, sizeof args, "%s/cfl_above_one.cfg -q -o %s "
+                 "run.allow_cfl_above_one=true '%s'", BAD_DIR, OUT_DIR, cases[k][0]);
+        int rc = tk_run_mpm(args, out, sizeof out);
+        if (rc != 1)
+            fail_msg("override %s: exit status %d, expected 1: %s", cases[k][0], rc, out);
+        if (!strstr(out, cases[k][1]))
+            fail_msg("override %s: message lacks \"%s\": %s", cases[k][0], cases[k][1], out);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(every_bad_scene_is_refused),
+        cmocka_unit_test(cfl_above_one_accepted_when_insisted),
+        cmocka_unit_test(bad_overrides_are_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

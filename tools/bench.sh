@@ -1,0 +1,136 @@
+#!/usr/bin/env bash
+# make bench: speed and memory of the stage-1 solver on one thread.
+#
+# Speed: particle-steps per second on the two Sulsky disks refined to about
+# 50,000 and 200,000 points (tools/bench/disks_*.cfg).  Each case is run for
+# N and for 2N steps and timed from outside (date +%s.%N); the difference
+# of the two wall times is the cost of N steps alone, so reading the scene,
+# making the points and writing the final output cancel.  Each wall time is
+# the shortest of REPEAT runs.  Set PIN="taskset -c K" to pin to a CPU.
+#
+# Memory per point, two ways:
+#   arrays   - what the solver's arrays hold for n points: 14 doubles and
+#              3 ints per point (particles.h) plus 9 doubles per grid slot
+#              and a flag byte per node (grid.h), divided by n;
+#   measured - peak resident set (GNU time's "Maximum resident set size")
+#              of the run minus that of the small tests/1-mpm/scenes/disks.cfg
+#              run (program, libraries, stack), divided by n.  This counts
+#              the spare capacity of arrays grown by doubling.
+#
+# Environment: MPM (default build/stage1/mpm), SCHEMES (default
+# "usl musl usf"), REPEAT (default 3), PIN (e.g. "taskset -c 2"), STEPS50K / STEPS200K (N).
+set -u
+cd "$(dirname "$0")/.."
+MPM=${MPM:-build/stage1/mpm}
+SCHEMES=${SCHEMES:-"usl musl usf"}
+REPEAT=${REPEAT:-3}
+GOAL_RATE=6e6          # particle-steps per second, one thread, 200k points
+GOAL_BYTES=350         # bytes per point at most
+WORK=$(mktemp -d "${TMPDIR:-/tmp}/mpm-bench.XXXXXX")
+trap 'rm -rf "$WORK"' EXIT
+export OMP_NUM_THREADS=1
+PIN=${PIN:-}
+TIMEV=""
+[ -x /usr/bin/time ] && TIMEV="/usr/bin/time"
+
+[ -x "$MPM" ] || { echo "bench: $MPM not built (run make stage1)" >&2; exit 1; }
+
+now() { date +%s.%N; }
+
+# header SCENE -> "points dt nx ny"
+header() {
+    local line
+    line=$($MPM "$1" -q -o "$WORK/probe" run.time=1e-9 | head -1) || return 1
+    echo "$line" | sed -E 's/.*: ([0-9]+) points, grid ([0-9]+) x ([0-9]+) cells, dt = ([0-9.eE+-]+) ms.*/\1 \4 \2 \3/'
+}
+
+# wall SCENE SCHEME STEPS DT -> seconds for one whole run (or "fail")
+wall() {
+    local t0 t1 time
+    time=$(awk -v n="$3" -v dt="$4" 'BEGIN { printf "%.17g", (n - 0.5) * dt }')
+    t0=$(now)
+    if ! $PIN $MPM "$1" -q -o "$WORK/run" run.update="$2" run.time="$time" \
+            >/dev/null 2>"$WORK/err"; then
+        echo fail
+        return
+    fi
+    t1=$(now)
+    awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.6f", b - a }'
+}
+
+# peak_kb SCENE [overrides] -> peak RSS in kB
+peak_kb() {
+    local scene=$1
+    shift
+    $TIMEV -v $MPM "$scene" -q -o "$WORK/mem" "$@" 2>&1 >/dev/null |
+        awk -F: '/Maximum resident set size/ { gsub(/ /, "", $2); print $2 }'
+}
+
+printf 'mpm bench: %s, one thread%s\n' "$MPM" "${PIN:+ ($PIN)}"
+printf 'CPU: %s\n' "$(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo 2>/dev/null)"
+printf 'timing: wall time of 2N steps minus that of N steps, each the best of %s runs\n' "$REPEAT"
+printf 'load average before: %s\n\n' "$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)"
+printf '%-16s %8s %7s %6s %12s %14s\n' scene points scheme N "s per step" "particle-steps/s"
+
+declare -A RATE NPTS
+for case in 50k 200k; do
+    scene=tools/bench/disks_$case.cfg
+    read -r npts dt nx ny < <(header "$scene") || { echo "bench: cannot read $scene" >&2; exit 1; }
+    NPTS[$case]=$npts
+    if [ "$case" = 50k ]; then N=${STEPS50K:-400}; else N=${STEPS200K:-100}; fi
+    for scheme in $SCHEMES; do
+        best=""
+        ta=""
+        tb=""
+        for ((r = 0; r < REPEAT; r++)); do
+            a=$(wall "$scene" "$scheme" "$N" "$dt")
+            b=$(wall "$scene" "$scheme" $((2 * N)) "$dt")
+            if [ "$a" = fail ] || [ "$b" = fail ]; then best=fail; break; fi
+            ta=$(awk -v a="$a" -v m="$ta" 'BEGIN { print (m == "" || a < m) ? a : m }')
+            tb=$(awk -v b="$b" -v m="$tb" 'BEGIN { print (m == "" || b < m) ? b : m }')
+        done
+        [ "$best" = fail ] || best=$(awk -v a="$ta" -v b="$tb" 'BEGIN { printf "%.6f", b - a }')
+        if [ "$best" = fail ]; then
+            printf '%-16s %8d %7s %6d %12s %14s   (%s)\n' "disks_$case" "$npts" "$scheme" "$N" \
+                - - "$(tail -1 "$WORK/err")"
+            continue
+        fi
+        rate=$(awk -v n="$npts" -v N="$N" -v d="$best" 'BEGIN { printf "%.4g", n * N / d }')
+        RATE[$case.$scheme]=$rate
+        printf '%-16s %8d %7s %6d %12.4g %14.3g\n' "disks_$case" "$npts" "$scheme" "$N" \
+            "$(awk -v N="$N" -v d="$best" 'BEGIN { print d / N }')" "$rate"
+    done
+done
+
+echo
+printf 'memory per point (200k scene)\n'
+read -r npts dt nx ny < <(header tools/bench/disks_200k.cfg)
+arrays=$(awk -v n="$npts" -v nx="$nx" -v ny="$ny" 'BEGIN {
+    nodes = (nx + 1) * (ny + 1)
+    printf "%.0f", (n * (14 * 8 + 3 * 4) + nodes * (9 * 8 + 1)) / n }')
+printf '  arrays:   %s bytes/point (points 124 B each + grid %d nodes x 73 B)\n' \
+    "$arrays" "$(( (nx + 1) * (ny + 1) ))"
+if [ -n "$TIMEV" ]; then
+    base=$(peak_kb tests/1-mpm/scenes/disks.cfg run.time=1e-9)
+    big=$(peak_kb tools/bench/disks_200k.cfg run.time=1e-9)
+    if [ -n "$base" ] && [ -n "$big" ]; then
+        measured=$(awk -v a="$big" -v b="$base" -v n="$npts" 'BEGIN { printf "%.0f", (a - b) * 1024 / n }')
+        printf '  measured: %s bytes/point (peak RSS %s kB minus %s kB for disks.cfg)\n' \
+            "$measured" "$big" "$base"
+    fi
+else
+    echo "  measured: /usr/bin/time not found, skipped"
+fi
+
+echo
+r=${RATE[200k.musl]:-}
+printf 'goal: >= %g particle-steps/s on one thread at 200k points; <= %d bytes/point\n' \
+    "$GOAL_RATE" "$GOAL_BYTES"
+if [ -n "$r" ]; then
+    printf 'stage 1 (musl, 200k): %s particle-steps/s = %.2f x the goal; ' "$r" \
+        "$(awk -v r="$r" -v g="$GOAL_RATE" 'BEGIN { print r / g }')"
+else
+    printf 'stage 1 (musl, 200k): no rate; '
+fi
+printf '%s bytes/point (arrays) = %s the limit\n' "$arrays" \
+    "$(awk -v a="$arrays" -v g="$GOAL_BYTES" 'BEGIN { print (a <= g ? "within" : "over") }')"
