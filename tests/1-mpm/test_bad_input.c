@@ -3,7 +3,9 @@
  * @brief Malformed scenes and overrides are refused, naming the file, the
  *        line and the problem, with exit status 1 and no crash.
  *
- * Every file in tests/1-mpm/bad/ is one malformed scene.  Its header says
+ * Every file in tests/N-name/bad/ is one malformed scene, checked by builds
+ * of stage N and later (each chapter adds the bad inputs of what it adds,
+ * e.g. tests/2-fields/bad/ holds malformed cracks).  Its header says
  * what the refusal must contain:
  *   # expect: <substring of the message>
  *   # refused-before-stage: N    (optional: only builds of stage < N refuse
@@ -24,7 +26,6 @@
 #define MPM_STAGE 1
 #endif
 
-#define BAD_DIR "tests/1-mpm/bad"
 #define OUT_DIR "build/test-bad-input-out"  /* written only if a scene is wrongly accepted */
 
 /** What a bad scene's header and marker say. */
@@ -35,10 +36,10 @@ typedef struct BadCase {
     int line;           /* line carrying "<- here" */
 } BadCase;
 
-static void read_case(const char *name, BadCase *c)
+static void read_case(const char *dir, const char *name, BadCase *c)
 {
     char buf[1024];
-    if (snprintf(c->path, sizeof c->path, "%s/%s", BAD_DIR, name) >= (int)sizeof c->path)
+    if (snprintf(c->path, sizeof c->path, "%s/%s", dir, name) >= (int)sizeof c->path)
         fail_msg("file name too long: %s", name);
     c->expect[0] = '\0';
     c->before_stage = 0;
@@ -65,10 +66,10 @@ static int by_name(const void *a, const void *b)
     return strcmp((const char *)a, (const char *)b);
 }
 
-/** Names of the .cfg files in BAD_DIR, sorted; returns how many. */
-static int list_cases(char names[][256], int max)
+/** Names of the .cfg files in @p dir, sorted; returns how many. */
+static int list_cases(const char *dir, char names[][256], int max)
 {
-    DIR *d = opendir(BAD_DIR);
+    DIR *d = opendir(dir);
     assert_non_null(d);
     int n = 0;
     const struct dirent *e;
@@ -94,15 +95,46 @@ static void check_message(const char *who, const BadCase *c, const char *msg)
         fail_msg("%s %s: message lacks \"%s\": %s", who, c->path, c->expect, msg);
 }
 
+/** The bad/ folders of chapters 1..MPM_STAGE, "tests/N-name/bad". */
+static int bad_dirs(char dirs[][256], int max)
+{
+    DIR *d = opendir("tests");
+    assert_non_null(d);
+    int n = 0;
+    const struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        int stage = atoi(e->d_name);
+        char path[512];
+        if (stage < 1 || stage > MPM_STAGE || !strchr(e->d_name, '-'))
+            continue;
+        snprintf(path, sizeof path, "tests/%.200s/bad", e->d_name);
+        DIR *b = opendir(path);
+        if (!b)
+            continue;
+        closedir(b);
+        assert_true(n < max);
+        snprintf(dirs[n++], 256, "%.250s", path);
+    }
+    closedir(d);
+    qsort(dirs, (size_t)n, sizeof dirs[0], by_name);
+    return n;
+}
+
 static void every_bad_scene_is_refused(void **state)
 {
     (void)state;
-    static char names[64][256];
-    int n = list_cases(names, 64), checked = 0;
+    static char names[256][256], dirs[16][256], where[256][256];
+    int n = 0, checked = 0, ndirs = bad_dirs(dirs, 16);
+    for (int k = 0; k < ndirs; k++) {
+        int m = list_cases(dirs[k], names + n, 256 - n);
+        for (int j = 0; j < m; j++)
+            snprintf(where[n + j], 256, "%.250s", dirs[k]);
+        n += m;
+    }
     assert_true(n >= 20);                     /* the set is all there */
     for (int k = 0; k < n; k++) {
         BadCase c;
-        read_case(names[k], &c);
+        read_case(where[k], names[k], &c);
         if (c.before_stage && MPM_STAGE >= c.before_stage)
             continue;                         /* this build has the feature */
         char args[1024], out[4096], err[1024];
@@ -128,7 +160,7 @@ static void cfl_above_one_accepted_when_insisted(void **state)
 {
     (void)state;
     static const char *const insist[] = {"run.allow_cfl_above_one=true", NULL};
-    Sim *sim = tk_load_file(BAD_DIR "/cfl_above_one.cfg", insist);
+    Sim *sim = tk_load_file("tests/1-mpm/bad/cfl_above_one.cfg", insist);
     const Material *m = &sim->scene.mat[0];
     assert_close(sim->scene.run.cfl, 1.5, 0.0);
     /* points at rest: dt = cfl * cell / c, c = sqrt(c11 / rho) */
@@ -151,8 +183,8 @@ static void bad_overrides_are_refused(void **state)
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         char args[1024], out[4096];
-        snprintf(args, sizeof args, "%s/cfl_above_one.cfg -q -o %s "
-                 "run.allow_cfl_above_one=true '%s'", BAD_DIR, OUT_DIR, cases[k][0]);
+        snprintf(args, sizeof args, "tests/1-mpm/bad/cfl_above_one.cfg -q -o %s "
+                 "run.allow_cfl_above_one=true '%s'", OUT_DIR, cases[k][0]);
         int rc = tk_run_mpm(args, out, sizeof out);
         if (rc != 1)
             fail_msg("override %s: exit status %d, expected 1: %s", cases[k][0], rc, out);
