@@ -44,12 +44,13 @@ header() {
     echo "$line" | sed -E 's/.*: ([0-9]+) points, grid ([0-9]+) x ([0-9]+) cells, dt = ([0-9.eE+-]+) ms.*/\1 \4 \2 \3/'
 }
 
-# wall SCENE SCHEME STEPS DT -> seconds for one whole run (or "fail")
+# wall SCENE SCHEME STEPS DT -> seconds for one whole run (or "fail");
+# the program is $RUN (default $MPM)
 wall() {
     local t0 t1 time
     time=$(awk -v n="$3" -v dt="$4" 'BEGIN { printf "%.17g", (n - 0.5) * dt }')
     t0=$(now)
-    if ! $PIN $MPM "$1" -q -o "$WORK/run" run.update="$2" run.time="$time" \
+    if ! $PIN ${RUN:-$MPM} "$1" -q -o "$WORK/run" run.update="$2" run.time="$time" \
             >/dev/null 2>"$WORK/err"; then
         echo fail
         return
@@ -66,6 +67,20 @@ peak_kb() {
         awk -F: '/Maximum resident set size/ { gsub(/ /, "", $2); print $2 }'
 }
 
+# steps_time SCENE SCHEME N DT -> seconds of N steps alone: the best of
+# REPEAT wall times of 2N steps minus the best of N steps (or "fail")
+steps_time() {
+    local a b ta="" tb="" r
+    for ((r = 0; r < REPEAT; r++)); do
+        a=$(wall "$1" "$2" "$3" "$4")
+        b=$(wall "$1" "$2" $((2 * $3)) "$4")
+        if [ "$a" = fail ] || [ "$b" = fail ]; then echo fail; return; fi
+        ta=$(awk -v a="$a" -v m="$ta" 'BEGIN { print (m == "" || a < m) ? a : m }')
+        tb=$(awk -v b="$b" -v m="$tb" 'BEGIN { print (m == "" || b < m) ? b : m }')
+    done
+    awk -v a="$ta" -v b="$tb" 'BEGIN { printf "%.6f", b - a }'
+}
+
 printf 'mpm bench: %s, one thread%s\n' "$MPM" "${PIN:+ ($PIN)}"
 printf 'CPU: %s\n' "$(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo 2>/dev/null)"
 printf 'timing: wall time of 2N steps minus that of N steps, each the best of %s runs\n' "$REPEAT"
@@ -79,17 +94,7 @@ for case in 50k 200k; do
     NPTS[$case]=$npts
     if [ "$case" = 50k ]; then N=${STEPS50K:-400}; else N=${STEPS200K:-100}; fi
     for scheme in $SCHEMES; do
-        best=""
-        ta=""
-        tb=""
-        for ((r = 0; r < REPEAT; r++)); do
-            a=$(wall "$scene" "$scheme" "$N" "$dt")
-            b=$(wall "$scene" "$scheme" $((2 * N)) "$dt")
-            if [ "$a" = fail ] || [ "$b" = fail ]; then best=fail; break; fi
-            ta=$(awk -v a="$a" -v m="$ta" 'BEGIN { print (m == "" || a < m) ? a : m }')
-            tb=$(awk -v b="$b" -v m="$tb" 'BEGIN { print (m == "" || b < m) ? b : m }')
-        done
-        [ "$best" = fail ] || best=$(awk -v a="$ta" -v b="$tb" 'BEGIN { printf "%.6f", b - a }')
+        best=$(steps_time "$scene" "$scheme" "$N" "$dt")
         if [ "$best" = fail ]; then
             printf '%-16s %8d %7s %6d %12s %14s   (%s)\n' "disks_$case" "$npts" "$scheme" "$N" \
                 - - "$(tail -1 "$WORK/err")"
@@ -134,3 +139,32 @@ else
 fi
 printf '%s bytes/point (arrays) = %s the limit\n' "$arrays" \
     "$(awk -v a="$arrays" -v g="$GOAL_BYTES" 'BEGIN { print (a <= g ? "within" : "over") }')"
+
+# ---- stage 2: what a crack costs ---------------------------------------------
+S2=build/stage2/mpm
+if [ -x "$S2" ]; then
+    echo
+    echo "stage 2: the refined DCB with and without its crack (same points), musl"
+    N=${STEPSDCB:-100}
+    read -r npts dt nx ny < <(MPM=$S2 header tools/bench/dcb_crack.cfg)
+    printf '%-26s %8s %6s %12s %14s\n' run points N "s per step" "particle-steps/s"
+    declare -A T
+    for run in "stage1 dcb_nocrack" "stage2 dcb_nocrack" "stage2 dcb_crack"; do
+        read -r st scene <<<"$run"
+        T[$run]=$(RUN=build/$st/mpm steps_time "tools/bench/$scene.cfg" musl "$N" "$dt")
+        if [ "${T[$run]}" = fail ]; then
+            printf '%-26s failed: %s\n' "$run" "$(tail -1 "$WORK/err")"
+            continue
+        fi
+        printf '%-26s %8d %6d %12.4g %14.3g\n' "$run" "$npts" "$N" \
+            "$(awk -v N="$N" -v d="${T[$run]}" 'BEGIN { print d / N }')" \
+            "$(awk -v n="$npts" -v N="$N" -v d="${T[$run]}" 'BEGIN { print n * N / d }')"
+    done
+    a=${T[stage2 dcb_nocrack]} b=${T[stage2 dcb_crack]} c=${T[stage1 dcb_nocrack]}
+    if [ "$a" != fail ] && [ "$b" != fail ] && [ "$c" != fail ]; then
+        printf 'crack overhead: time with crack / without = %.2f (the paper: about 1.1 with extent screening)\n' \
+            "$(awk -v a="$a" -v b="$b" 'BEGIN { print b / a }')"
+        printf 'no crack, stage 2 / stage 1 = %.2f (the same code runs; 1 within timing noise)\n' \
+            "$(awk -v a="$a" -v c="$c" 'BEGIN { print a / c }')"
+    fi
+fi

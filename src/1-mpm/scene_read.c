@@ -17,9 +17,12 @@ int scene_error(SceneReader *r, const config_setting_t *s, const char *key,
                 const char *fmt, ...)
 {
     int line = s ? (int)config_setting_source_line(s) : 0;
+    /* a setting from an @include'd file names that file */
+    const char *file = s && config_setting_source_file(s) ?
+                       config_setting_source_file(s) : r->file;
     int used;
     if (line > 0)
-        used = snprintf(r->err, r->errlen, "%s:%d: %s: ", r->file, line, key);
+        used = snprintf(r->err, r->errlen, "%s:%d: %s: ", file, line, key);
     else if (s && !config_setting_is_root(s))  /* added by an override */
         used = snprintf(r->err, r->errlen, "%s: %s (set on the command line): ",
                         r->file, key);

@@ -42,10 +42,11 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
 static int syntax_error(const config_t *cfg, const char *name, char *err,
                         size_t errlen)
 {
+    const char *where = config_error_file(cfg) ? config_error_file(cfg) : name;
     if (config_error_type(cfg) == CONFIG_ERR_FILE_IO)
-        snprintf(err, errlen, "%s: cannot read the file", name);
+        snprintf(err, errlen, "%s: cannot read the file", where);
     else
-        snprintf(err, errlen, "%s:%d: syntax error: %s", name,
+        snprintf(err, errlen, "%s:%d: syntax error: %s", where,
                  config_error_line(cfg), config_error_text(cfg));
     return -1;
 }
@@ -55,6 +56,14 @@ int sim_load_file(Sim *sim, const char *path, int noverrides,
 {
     config_t cfg;
     config_init(&cfg);
+    /* @include "other.cfg" is read relative to the scene's folder */
+    char dir[1024];
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (slash) {
+        *slash = '\0';
+        config_set_include_dir(&cfg, dir);
+    }
     int rc = 0;
     if (config_read_file(&cfg, path) != CONFIG_TRUE)
         rc = syntax_error(&cfg, path, err, errlen);
