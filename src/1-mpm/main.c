@@ -92,7 +92,9 @@ int main(int argc, char **argv)
     fflush(stdout);
     int rc = sim_run(sim, outdir, !quiet);
     if (rc == 0)
-        printf("mpm: done, output in %s\n", outdir);
+        printf("mpm: done, output in %s (%ld steps in %.3f s, %.3g particle-steps/s)\n",
+               outdir, sim->step, sim->loop_seconds,
+               sim->loop_seconds > 0 ? sim->pts.n * (double)sim->step / sim->loop_seconds : 0.0);
     sim_free(sim);
     free(sim);
     free(over);

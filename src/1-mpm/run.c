@@ -87,6 +87,7 @@ int sim_run(Sim *sim, const char *outdir, int progress)
         if (progress)
             progress_line(sim, start, &last);
     }
+    sim->loop_seconds = wall_seconds() - start;
     if (progress && rc != 3)
         fputc('\n', stderr);
     if (fclose(hist) != 0 && rc == 0)

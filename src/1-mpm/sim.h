@@ -38,6 +38,7 @@ typedef struct Sim {
     long nsteps;        /**< steps the run will take */
     Failure fail;       /**< filled when sim_step() reports instability */
     double *bodyke;     /**< scratch: kinetic energy per body */
+    double loop_seconds; /**< wall time of sim_run()'s time loop, output included */
 } Sim;
 
 /** Quantities that history.csv records at one instant. */
