@@ -19,6 +19,7 @@ CFLAGS_asan := $(WARN) -O1 -g -fno-omit-frame-pointer \
 LDFLAGS_release :=
 LDFLAGS_asan := -fsanitize=address,undefined
 LIBS := -lconfig -lm
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # tests link cmocka and LAPACKE (the reference finite element solver)
 TEST_LIBS := -lcmocka -llapacke $(LIBS)
 
@@ -116,7 +117,7 @@ exercise: deps
 # ---- tests -----------------------------------------------------------------
 # Every stage runs the tests of its own and all earlier chapters.
 check: deps
-	@$(MAKE) --no-print-directory check-build
+	@$(MAKE) --no-print-directory -j$(JOBS) check-build
 	@bash tools/run_tests.sh $(foreach s,$(STAGES),"stage$(s):build/stage$(s)/mpm:$(TESTS_release_$(s))" "asan-stage$(s):build/asan/stage$(s)/mpm:$(TESTS_asan_$(s))") \
 	    "exercises::$(EXERCISE_CHECKS)"
 

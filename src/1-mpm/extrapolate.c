@@ -12,7 +12,6 @@
 static void add_point_loads(Sim *sim)
 {
     const Scene *sc = &sim->scene;
-    Particles *P = &sim->pts;
     Grid *g = &sim->grid;
     for (int l = 0; l < sc->nloads; l++) {
         const Load *L = &sc->loads[l];
@@ -23,8 +22,7 @@ static void add_point_loads(Sim *sim)
         for (int k = 0; k < L->count; k++) {
             int p = L->points[k], n[4];
             double S[4], Gx[4], Gy[4];
-            shape_linear(P->xi[p], P->eta[p], g->idx, g->idy, S, Gx, Gy);
-            pair_slots(sim, p, n);
+            pair_shape(sim, p, S, Gx, Gy, n);
             for (int a = 0; a < 4; a++) {
                 g->fx[n[a]] += fx * S[a];
                 g->fy[n[a]] += fy * S[a];
@@ -41,8 +39,7 @@ void extrapolate(Sim *sim, unsigned what)
     for (int p = 0; p < P->n; p++) {
         double S[4], Gx[4], Gy[4];
         int n[4];
-        shape_linear(P->xi[p], P->eta[p], g->idx, g->idy, S, Gx, Gy);
-        pair_slots(sim, p, n);
+        pair_shape(sim, p, S, Gx, Gy, n);
         if (what & (EXTRAP_MASS | EXTRAP_MOMENTUM)) {
             double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
             for (int a = 0; a < 4; a++) {

@@ -6,6 +6,7 @@
 #ifndef MPM_STEP_H
 #define MPM_STEP_H
 
+#include "shape.h"
 #include "sim.h"
 
 /** extrapolate(): masses and momenta (eq. 26). */
@@ -66,5 +67,15 @@ static inline void pair_slots(const Sim *sim, int p, int slot[4])
         sim->hooks.pair_slots(sim, p, slot);
 }
 /// [pair_slots]
+
+/** @brief Shape values S, gradients (Gx, Gy) and field slots of the four
+ *         pairs of point @p p, from its cell found in Task 0. */
+static inline void pair_shape(const Sim *sim, int p, double S[4], double Gx[4],
+                              double Gy[4], int slot[4])
+{
+    const Grid *g = &sim->grid;
+    shape_linear(sim->pts.xi[p], sim->pts.eta[p], g->idx, g->idy, S, Gx, Gy);
+    pair_slots(sim, p, slot);
+}
 
 #endif

@@ -18,8 +18,7 @@ int update_stress(Sim *sim, double dt_star)
     for (int p = 0; p < P->n; p++) {
         double S[4], Gx[4], Gy[4];
         int n[4];
-        shape_linear(P->xi[p], P->eta[p], g->idx, g->idy, S, Gx, Gy);
-        pair_slots(sim, p, n);
+        pair_shape(sim, p, S, Gx, Gy, n);
         double dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
         for (int a = 0; a < 4; a++) {   /* L_p = sum_i v_i (outer) G_ip */
             dudx += g->vx[n[a]] * Gx[a];

@@ -17,8 +17,7 @@ int update_points(Sim *sim)
     for (int p = 0; p < P->n; p++) {
         double S[4], Gx[4], Gy[4];
         int n[4];
-        shape_linear(P->xi[p], P->eta[p], g->idx, g->idy, S, Gx, Gy);
-        pair_slots(sim, p, n);
+        pair_shape(sim, p, S, Gx, Gy, n);
         double ax = 0, ay = 0, vx = 0, vy = 0;
         for (int a = 0; a < 4; a++) {   /* each pair reads its own field */
             ax += S[a] * g->ax[n[a]];

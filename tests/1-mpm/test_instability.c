@@ -115,23 +115,6 @@ static void stable(const char *scheme)
 static void musl_stable(void **state) { (void)state; stable("musl"); }
 static void usf_stable(void **state) { (void)state; stable("usf"); }
 
-/** Read a whole file into a NUL-terminated buffer (caller frees). */
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        fail_msg("cannot open %s", path);
-    fseek(f, 0, SEEK_END);
-    long len = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *buf = malloc((size_t)len + 1);
-    assert_non_null(buf);
-    assert_int_equal(fread(buf, 1, (size_t)len, f), (size_t)len);
-    buf[len] = '\0';
-    fclose(f);
-    return buf;
-}
-
 static int ends_with(const char *s, const char *tail)
 {
     size_t a = strlen(s), b = strlen(tail);
@@ -142,7 +125,7 @@ static int ends_with(const char *s, const char *tail)
  *  row's step. */
 static long check_history(const char *path)
 {
-    char *text = slurp(path);
+    char *text = tk_slurp(path, NULL);
     assert_true(ends_with(text, "\n"));
     char *save = NULL, *line = strtok_r(text, "\n", &save);
     assert_non_null(line);
@@ -179,7 +162,7 @@ static int check_pvd(const char *dir)
     char path[1024];
     int w = snprintf(path, sizeof path, "%s/particles.pvd", dir);
     assert_true(w > 0 && w < (int)sizeof path);
-    char *text = slurp(path);
+    char *text = tk_slurp(path, NULL);
     assert_true(ends_with(text, "</VTKFile>\n"));
     int files = 0;
     for (char *c = strstr(text, "file=\""); c; c = strstr(c, "file=\"")) {
@@ -188,7 +171,7 @@ static int check_pvd(const char *dir)
         assert_non_null(q);
         w = snprintf(path, sizeof path, "%s/%.*s", dir, (int)(q - c), c);
         assert_true(w > 0 && w < (int)sizeof path);
-        char *vtu = slurp(path);
+        char *vtu = tk_slurp(path, NULL);
         assert_true(ends_with(vtu, "</VTKFile>\n"));
         free(vtu);
         files++;

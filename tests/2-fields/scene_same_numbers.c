@@ -9,22 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/** Read a whole file into a new buffer; length in *len. */
-static char *slurp(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        fail_msg("cannot read %s", path);
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *buf = malloc((size_t)n + 1);
-    assert_non_null(buf);
-    *len = fread(buf, 1, (size_t)n, f);
-    fclose(f);
-    return buf;
-}
-
 static void uncracked_scene_matches_stage1(void **state)
 {
     (void)state;
@@ -42,7 +26,7 @@ static void uncracked_scene_matches_stage1(void **state)
         size_t na, nb;
         snprintf(a, sizeof a, "build/test-out/same-s1/%s", files[k]);
         snprintf(b, sizeof b, "build/test-out/same-s2/%s", files[k]);
-        char *fa = slurp(a, &na), *fb = slurp(b, &nb);
+        char *fa = tk_slurp(a, &na), *fb = tk_slurp(b, &nb);
         if (na != nb || memcmp(fa, fb, na) != 0)
             fail_msg("%s differs between stage 1 and stage 2", files[k]);
         free(fa);

@@ -75,3 +75,21 @@ void tk_steps(Sim *sim, long n)
             fail_msg("unstable at step %ld: particle %d %s = %g", sim->fail.step,
                      sim->fail.particle, sim->fail.quantity, sim->fail.value);
 }
+
+char *tk_slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        fail_msg("cannot read %s", path);
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *buf = malloc((size_t)n + 1);
+    assert_non_null(buf);
+    assert_int_equal(fread(buf, 1, (size_t)n, f), (size_t)n);
+    buf[n] = '\0';
+    fclose(f);
+    if (len)
+        *len = (size_t)n;
+    return buf;
+}

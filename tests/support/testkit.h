@@ -41,6 +41,11 @@ void tk_free(Sim *sim);
  *         into out, and return the exit status. */
 int tk_run_mpm(const char *args, char *out, size_t outlen);
 
+/** @brief Read a whole file into a new NUL-terminated buffer (the caller
+ *         frees it); its length in *len when @p len is not NULL. Fails the
+ *         test when the file cannot be read. */
+char *tk_slurp(const char *path, size_t *len);
+
 /** @brief Take @p n steps; fail the test if the run goes unstable. */
 void tk_steps(Sim *sim, long n);
 
