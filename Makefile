@@ -73,6 +73,8 @@ $(foreach s,$(STAGES),$(eval $(call STAGE_RULES,asan,$(s))))
 .PHONY: all deps $(addprefix stage,$(STAGES)) check check-release check-asan \
         check-exercises exercise docs figures bench clean
 .SECONDARY:
+.PHONY: FORCE
+FORCE:
 
 all: $(addprefix stage,$(STAGES))
 
@@ -91,8 +93,9 @@ EXERCISE_BINS := $(foreach e,$(EXERCISES),$(call ex_tests,$(e),reference) $(call
 EXERCISE_CHECKS := $(foreach e,$(EXERCISES),$(call ex_tests,$(e),reference) !$(call ex_tests,$(e),stub))
 
 # $(1) = exercise, $(2) = reference | stub | student, $(3) = solution file
+# $(4) = FORCE for a student's file: SOLUTION may name another file each time
 define EXERCISE_RULES
-build/exercises/$(1)/$(2)/solution.o: $(3)
+build/exercises/$(1)/$(2)/solution.o: $(3) $(4)
 	@mkdir -p $$(@D)
 	$$(CC) $$(CFLAGS_release) $$(INC_release_$(call ex_stage,$(1))) -c $$< -o $$@
 build/exercises/$(1)/$(2)/%: build/stage$(call ex_stage,$(1))/tests/$(firstword $(subst /, ,$(1)))/%.o \
@@ -104,13 +107,14 @@ $(foreach e,$(EXERCISES),$(eval $(call EXERCISE_RULES,$(e),reference,$(shell cat
 $(foreach e,$(EXERCISES),$(eval $(call EXERCISE_RULES,$(e),stub,exercises/$(e)/stub.c)))
 ifdef EX
 ifdef SOLUTION
-$(eval $(call EXERCISE_RULES,$(EX),student,$(SOLUTION)))
+$(eval $(call EXERCISE_RULES,$(EX),student,$(SOLUTION),FORCE))
 endif
 endif
 
 exercise: deps
 	@test -n "$(EX)" || { echo "usage: make exercise EX=<one of: $(EXERCISES)> SOLUTION=file.c"; exit 1; }
 	@test -n "$(SOLUTION)" || { echo "give SOLUTION=your_file.c (start from exercises/$(EX)/stub.c)"; exit 1; }
+	@test -f "$(SOLUTION)" || { echo "SOLUTION=$(SOLUTION): no such file"; exit 1; }
 	@$(MAKE) --no-print-directory $(call ex_tests,$(EX),student)
 	@bash tools/run_tests.sh "exercise $(EX)::$(call ex_tests,$(EX),student)"
 
