@@ -136,6 +136,8 @@ docs:
 	@$(MAKE) --no-print-directory $(DOC_FIGURES)
 	@mkdir -p build/docs
 	doxygen Doxyfile
+	@ln -sfn /usr/share/javascript/mathjax build/docs/html/mathjax
+	@echo "docs: build/docs/html/index.html"
 
 FIGURES := $(notdir $(wildcard figures/fig*))
 figures: $(FIGURES)

@@ -2,15 +2,15 @@
 # Bring the Debian packages a job needs, or say exactly which are missing.
 #   sh tools/deps.sh test      compiler, make, libconfig, cmocka, LAPACKE
 #   sh tools/deps.sh figures   the above and gnuplot
-#   sh tools/deps.sh docs      doxygen
+#   sh tools/deps.sh docs      doxygen, MathJax, and what the figures need
 set -u
 job=${1:-test}
 base="gcc make libc6-dev libconfig-dev libcmocka-dev liblapacke-dev"
 case "$job" in
   test) want="$base" ;;
   figures) want="$base gnuplot-nox" ;;
-  docs) want="doxygen" ;;
-  all) want="$base gnuplot-nox doxygen" ;;
+  docs) want="doxygen libjs-mathjax gnuplot-nox $base" ;;
+  all) want="$base gnuplot-nox doxygen libjs-mathjax" ;;
   *) echo "usage: sh tools/deps.sh test|figures|docs|all" >&2; exit 2 ;;
 esac
 
