@@ -11,7 +11,7 @@
 
 SHELL := /bin/bash
 CC ?= cc
-WARN := -std=c11 -Wall -Wextra -Werror -Wshadow -Wmissing-prototypes \
+WARN := -std=c11 -Wall -Wextra -Werror -Wshadow -Wmissing-prototypes -Wundef \
         -D_POSIX_C_SOURCE=200809L
 CFLAGS_release := $(WARN) -O2 -g
 CFLAGS_asan := $(WARN) -O1 -g -fno-omit-frame-pointer \
@@ -44,7 +44,7 @@ TESTS_$(1)_$(2) := $$(patsubst tests/%.c,$$(B_$(1)_$(2))/tests/%,$$(UNIT_$(1)_$(
 
 $$(B_$(1)_$(2))/obj/%.o: src/%.c
 	@mkdir -p $$(@D)
-	$$(CC) $$(CFLAGS_$(1)) -DMPM_STAGE=$(2) $$(INC_$(1)_$(2)) -MMD -MP -c $$< -o $$@
+	$$(CC) $$(CFLAGS_$(1)) $$(if $$(filter %/stages.c,$$<),-DMPM_STAGE=$(2)) $$(INC_$(1)_$(2)) -MMD -MP -c $$< -o $$@
 
 $$(B_$(1)_$(2))/libmpm.a: $$(filter-out %/main.o,$$(OBJ_$(1)_$(2)))
 	@rm -f $$@
@@ -55,11 +55,11 @@ $$(B_$(1)_$(2))/mpm: $$(B_$(1)_$(2))/obj/1-mpm/main.o $$(B_$(1)_$(2))/libmpm.a
 
 $$(B_$(1)_$(2))/tests/support/%.o: tests/support/%.c
 	@mkdir -p $$(@D)
-	$$(CC) $$(CFLAGS_$(1)) -DMPM_STAGE=$(2) $$(INC_$(1)_$(2)) -Itests/support -MMD -MP -c $$< -o $$@
+	$$(CC) $$(CFLAGS_$(1)) $$(INC_$(1)_$(2)) -Itests/support -MMD -MP -c $$< -o $$@
 
 $$(B_$(1)_$(2))/tests/%.o: tests/%.c
 	@mkdir -p $$(@D)
-	$$(CC) $$(CFLAGS_$(1)) -DMPM_STAGE=$(2) $$(INC_$(1)_$(2)) -Itests/support -MMD -MP -c $$< -o $$@
+	$$(CC) $$(CFLAGS_$(1)) $$(INC_$(1)_$(2)) -Itests/support -MMD -MP -c $$< -o $$@
 
 $$(B_$(1)_$(2))/tests/%: $$(B_$(1)_$(2))/tests/%.o $$(SUPPORT_$(1)_$(2)) $$(B_$(1)_$(2))/libmpm.a
 	$$(CC) $$(LDFLAGS_$(1)) $$^ $$(TEST_LIBS) -o $$@

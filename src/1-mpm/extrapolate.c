@@ -1,11 +1,13 @@
 /**
  * @file extrapolate.c
- * @brief Point to grid: masses, momenta and forces of every field slot
- *        (Tasks 1 and 3, eq. 26 and 28).
+ * @brief Point to grid: masses, momenta, forces (and volumes) of every
+ *        field slot (Tasks 1 and 3, eq. 8-9, 26 and 28).
+ *
+ * Each point writes only to the slots of its own stencil. The loops visit
+ * points in index order; a threaded loop will visit points binned by cell
+ * with the cells coloured so that no two threads share a node, and call
+ * the same per-point functions.
  */
-#include <math.h>
-
-#include "shape.h"
 #include "step.h"
 
 /** Add the point loads of the scene, ramped in time, to the slot forces. */
@@ -20,14 +22,28 @@ static void add_point_loads(Sim *sim)
         double scale = (L->ramp > 0.0 && sim->t < L->ramp) ? sim->t / L->ramp : 1.0;
         double fx = scale * L->fx / L->count, fy = scale * L->fy / L->count;
         for (int k = 0; k < L->count; k++) {
-            int p = L->points[k], n[4];
-            double S[4], Gx[4], Gy[4];
-            pair_shape(sim, p, S, Gx, Gy, n);
-            for (int a = 0; a < 4; a++) {
-                g->fx[n[a]] += fx * S[a];
-                g->fy[n[a]] += fy * S[a];
+            Stencil st;
+            stencil_of_point(sim, L->points[k], &st);
+            for (int a = 0; a < STENCIL_NODES; a++) {
+                g->fx[st.slot[a]] += fx * st.S[a];
+                g->fy[st.slot[a]] += fy * st.S[a];
             }
         }
+    }
+}
+
+/** Nodal volumes V_i = sum_p V_p S_ip with the current point volume
+ *  V_p = (1 + e_xx)(1 + e_yy) V_p0 (eq. 8-9), for the stages that ask. */
+static void extrapolate_volumes(Sim *sim)
+{
+    const Particles *P = &sim->pts;
+    Grid *g = &sim->grid;
+    for (int p = 0; p < P->n; p++) {
+        Stencil st;
+        stencil_of_point(sim, p, &st);
+        double v = (1.0 + P->exx[p]) * (1.0 + P->eyy[p]) * P->vol[p];
+        for (int a = 0; a < STENCIL_NODES; a++)
+            g->vol[st.slot[a]] += v * st.S[a];
     }
 }
 
@@ -37,27 +53,30 @@ void extrapolate(Sim *sim, unsigned what)
     const Particles *P = &sim->pts;
     Grid *g = &sim->grid;
     for (int p = 0; p < P->n; p++) {
-        double S[4], Gx[4], Gy[4];
-        int n[4];
-        pair_shape(sim, p, S, Gx, Gy, n);
+        Stencil st;
+        stencil_of_point(sim, p, &st);
         if (what & (EXTRAP_MASS | EXTRAP_MOMENTUM)) {
             double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
-            for (int a = 0; a < 4; a++) {
+            for (int a = 0; a < STENCIL_NODES; a++) {
+                int s = st.slot[a];
                 if (what & EXTRAP_MASS)
-                    g->m[n[a]] += mp * S[a];            /* eq. 26 */
-                g->px[n[a]] += qx * S[a];
-                g->py[n[a]] += qy * S[a];
+                    g->m[s] += mp * st.S[a];            /* eq. 26 */
+                g->px[s] += qx * st.S[a];
+                g->py[s] += qy * st.S[a];
             }
         }
         if (what & EXTRAP_FORCE) {
             double v = P->vol[p];                       /* m_p / rho_p */
             double sxx = P->sxx[p], syy = P->syy[p], sxy = P->sxy[p];
-            for (int a = 0; a < 4; a++) {               /* eq. 28 */
-                g->fx[n[a]] -= v * (sxx * Gx[a] + sxy * Gy[a]);
-                g->fy[n[a]] -= v * (sxy * Gx[a] + syy * Gy[a]);
+            for (int a = 0; a < STENCIL_NODES; a++) {   /* eq. 28 */
+                int s = st.slot[a];
+                g->fx[s] -= v * (sxx * st.Gx[a] + sxy * st.Gy[a]);
+                g->fy[s] -= v * (sxy * st.Gx[a] + syy * st.Gy[a]);
             }
         }
     }
+    if ((what & EXTRAP_MASS) && g->vol)
+        extrapolate_volumes(sim);
     if (what & EXTRAP_FORCE)
         add_point_loads(sim);
 }

@@ -6,12 +6,14 @@
 
 int step_fail(Sim *sim, int p, const char *quantity, double value)
 {
-    if (!sim->fail.quantity) {
-        sim->fail.step = sim->step;
-        sim->fail.time = sim->t;
-        sim->fail.particle = p;
-        sim->fail.quantity = quantity;
-        sim->fail.value = value;
+    Failure *f = &sim->fail;
+    /* the lowest point of the step, so that a loop may run in any order */
+    if (!f->quantity || (f->step == sim->step && p < f->particle)) {
+        f->step = sim->step;
+        f->time = sim->t;
+        f->particle = p;
+        f->quantity = quantity;
+        f->value = value;
     }
     return -1;
 }

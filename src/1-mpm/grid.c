@@ -1,14 +1,21 @@
 /**
  * @file grid.c
- * @brief Allocation and clearing of the background grid.
+ * @brief Allocation, growth and clearing of the background grid.
  */
 #include "grid.h"
 
 #include <stdlib.h>
 #include <string.h>
 
+/** Addresses of every per-slot double array of @p g, optional ones too. */
+#define SLOT_ARRAYS(g) \
+    { &(g)->m, &(g)->px, &(g)->py, &(g)->fx, &(g)->fy, &(g)->vx, &(g)->vy, \
+      &(g)->ax, &(g)->ay, &(g)->vol, &(g)->qx, &(g)->qy }
+/** How many of SLOT_ARRAYS every grid has (the rest are optional). */
+#define SLOT_ARRAYS_ALWAYS 9
+
 int grid_init(Grid *g, double ox, double oy, double dx, double dy,
-              int ncx, int ncy, int extra_slots)
+              int ncx, int ncy)
 {
     memset(g, 0, sizeof *g);
     g->ox = ox;
@@ -23,31 +30,47 @@ int grid_init(Grid *g, double ox, double oy, double dx, double dy,
     g->nny = ncy + 1;
     g->nnodes = g->nnx * g->nny;
     g->nslots = g->nnodes;
-    g->capacity = g->nnodes + extra_slots;
-    size_t n = (size_t)g->capacity;
-    double **arrays[] = {&g->m, &g->px, &g->py, &g->fx, &g->fy,
-                         &g->vx, &g->vy, &g->ax, &g->ay};
-    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) {
-        *arrays[k] = calloc(n, sizeof(double));
-        if (!*arrays[k])
-            return -1;
-    }
-    g->slot_node = calloc((size_t)extra_slots + 1, sizeof(int));
     g->fixed = calloc((size_t)g->nnodes, 1);
-    return (g->slot_node && g->fixed) ? 0 : -1;
+    if (!g->fixed)
+        return -1;
+    return grid_reserve(g, g->nnodes);
+}
+
+int grid_reserve(Grid *g, int capacity)
+{
+    if (capacity <= g->capacity)
+        return 0;
+    double **arrays[] = SLOT_ARRAYS(g);
+    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) {
+        if (k >= SLOT_ARRAYS_ALWAYS && !*arrays[k])
+            continue;                          /* optional, not asked for */
+        double *a = realloc(*arrays[k], (size_t)capacity * sizeof(double));
+        if (!a)
+            return -1;
+        memset(a + g->capacity, 0, (size_t)(capacity - g->capacity) * sizeof(double));
+        *arrays[k] = a;
+    }
+    int *sn = realloc(g->slot_node, (size_t)(capacity - g->nnodes + 1) * sizeof(int));
+    if (!sn)
+        return -1;
+    g->slot_node = sn;
+    g->capacity = capacity;
+    return 0;
+}
+
+int grid_want(Grid *g, double **which)
+{
+    if (*which)
+        return 0;
+    *which = calloc((size_t)g->capacity, sizeof(double));
+    return *which ? 0 : -1;
 }
 
 void grid_free(Grid *g)
 {
-    free(g->m);
-    free(g->px);
-    free(g->py);
-    free(g->fx);
-    free(g->fy);
-    free(g->vx);
-    free(g->vy);
-    free(g->ax);
-    free(g->ay);
+    double **arrays[] = SLOT_ARRAYS(g);
+    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
+        free(*arrays[k]);
     free(g->slot_node);
     free(g->fixed);
     memset(g, 0, sizeof *g);
@@ -61,11 +84,14 @@ void grid_clear(Grid *g)
     memset(g->py, 0, bytes);
     memset(g->fx, 0, bytes);
     memset(g->fy, 0, bytes);
+    if (g->vol)
+        memset(g->vol, 0, bytes);
 }
 
 double grid_bytes(const Grid *g)
 {
-    return (double)g->capacity * (9.0 * sizeof(double))
+    double arrays = 9.0 + (g->vol != NULL) + (g->qx != NULL) + (g->qy != NULL);
+    return (double)g->capacity * arrays * sizeof(double)
          + (double)(g->capacity - g->nnodes + 1) * sizeof(int)
          + (double)g->nnodes;
 }

@@ -3,10 +3,11 @@
  * @brief The background grid: a regular array of rectangular cells whose
  *        nodes carry the nodal masses, momenta and forces of one time step.
  *
- * A node owns one *slot* (its field 0).  Stages that give nodes more than one
- * velocity field append extra slots after the first @c nnodes; @c slot_node
- * says to which node each extra slot belongs.  Conventional MPM uses only the
- * first @c nnodes slots.
+ * A node owns one *slot* (its field 0).  Extra velocity fields (field_table.h)
+ * append slots after the first @c nnodes; @c slot_node says to which node
+ * each extra slot belongs.  Conventional MPM uses only the first @c nnodes
+ * slots.  Arrays a stage asks for (nodal volume, momentum before contact)
+ * stay NULL otherwise.
  */
 #ifndef MPM_GRID_H
 #define MPM_GRID_H
@@ -42,6 +43,9 @@ typedef struct Grid {
     double *vy;       /**< nodal y velocity per slot */
     double *ax;       /**< nodal x acceleration f/m per slot */
     double *ay;       /**< nodal y acceleration per slot */
+    double *vol;      /**< nodal volume per slot (eq. 8-9), when asked */
+    double *qx;       /**< x momentum before Task 4's contact, when asked */
+    double *qy;       /**< y momentum before Task 4's contact, when asked */
     unsigned char *fixed; /**< per node: GRID_FIX_X | GRID_FIX_Y */
 } Grid;
 /// [grid]
@@ -55,16 +59,23 @@ typedef struct Grid {
  * @param dy  cell height
  * @param ncx cells along x
  * @param ncy cells along y
- * @param extra_slots slots reserved beyond one per node (0 for one field)
  * @return 0 on success, -1 when memory is exhausted.
  */
 int grid_init(Grid *g, double ox, double oy, double dx, double dy,
-              int ncx, int ncy, int extra_slots);
+              int ncx, int ncy);
+
+/** @brief Make room for @p capacity slots (never shrinks). @return 0 or -1. */
+int grid_reserve(Grid *g, int capacity);
+
+/** @brief Allocate the optional per-slot array @p which (&g->vol, &g->qx,
+ *         &g->qy), zeroed; it grows with the grid. @return 0 or -1. */
+int grid_want(Grid *g, double **which);
 
 /** @brief Release the grid's arrays. */
 void grid_free(Grid *g);
 
-/** @brief Task 0/8: zero masses, momenta and forces of every slot in use. */
+/** @brief Task 0/8: zero masses, momenta, forces (and volumes) of every
+ *         slot in use. */
 void grid_clear(Grid *g);
 
 /** @brief Node that owns slot @p s. */

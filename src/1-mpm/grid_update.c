@@ -3,6 +3,8 @@
  * @brief Grid tasks: boundary conditions, nodal velocities and the
  *        momentum update (Tasks 2-4, eq. 4, 29 and 34).
  */
+#include <string.h>
+
 #include "step.h"
 
 /// [grid_velocities]
@@ -53,3 +55,41 @@ void grid_momentum_update(Sim *sim)
     }
 }
 /// [grid_momentum_update]
+
+/// [grid_contact]
+int grid_contact(Sim *sim, Seam seam)
+{
+    if (sim->hooks.seam[seam].n == 0)
+        return 0;                                 /* no contact: nothing */
+    Grid *g = &sim->grid;
+    int task4 = seam == SEAM_TASK4_CONTACT;
+    size_t bytes = (size_t)g->nslots * sizeof(double);
+    if (task4) {                                  /* p before contact */
+        memcpy(g->qx, g->px, bytes);
+        memcpy(g->qy, g->py, bytes);
+    }
+    int rc = hooks_run_step(sim, seam);
+    if (rc)
+        return rc;
+    double idt = 1.0 / sim->dt;
+    for (int s = 0; s < g->nslots; s++) {
+        unsigned fix = g->fixed[grid_slot_node(g, s)];
+        double m = g->m[s];
+        if (task4) {                              /* f = (p_new - p_old)/dt */
+            g->fx[s] += (g->px[s] - g->qx[s]) * idt;
+            g->fy[s] += (g->py[s] - g->qy[s]) * idt;
+        }
+        if (fix & GRID_FIX_X)
+            g->px[s] = g->fx[s] = 0.0;
+        if (fix & GRID_FIX_Y)
+            g->py[s] = g->fy[s] = 0.0;
+        g->vx[s] = m > 0.0 ? g->px[s] / m : 0.0;
+        g->vy[s] = m > 0.0 ? g->py[s] / m : 0.0;
+        if (task4) {
+            g->ax[s] = m > 0.0 ? g->fx[s] / m : 0.0;
+            g->ay[s] = m > 0.0 ? g->fy[s] / m : 0.0;
+        }
+    }
+    return 0;
+}
+/// [grid_contact]

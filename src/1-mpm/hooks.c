@@ -1,10 +1,18 @@
 /**
  * @file hooks.c
- * @brief Registration of update schemes, scene sections and refusals.
+ * @brief The registries of a build and the ordered subscriber lists of
+ *        its seams.
  */
 #include "hooks.h"
 
 #include <string.h>
+
+#include "sim.h"
+
+void hooks_begin_stage(Hooks *h, int rank)
+{
+    h->rank = rank;
+}
 
 int hooks_add_scheme(Hooks *h, const char *name, double before, double after,
                      int reextrapolate)
@@ -16,14 +24,24 @@ int hooks_add_scheme(Hooks *h, const char *name, double before, double after,
     return 0;
 }
 
-int hooks_add_section(Hooks *h, const char *key,
-                      int (*parse)(struct Sim *, const config_setting_t *,
-                                   char *, size_t))
+int hooks_add_key(Hooks *h, const char *section, const char *key,
+                  int (*parse)(struct Sim *, const config_setting_t *, int,
+                               struct SceneReader *))
 {
-    if (h->nsections == HOOKS_MAX)
+    if (h->nkeys == HOOKS_MAX)
         return -1;
-    h->sections[h->nsections++] = (SceneSection){key, parse};
+    h->keys[h->nkeys++] = (SceneKey){section, key, parse, h->rank};
     return 0;
+}
+
+const SceneKey *hooks_find_key(const Hooks *h, const char *section,
+                               const char *key)
+{
+    for (int k = 0; k < h->nkeys; k++)
+        if (strcmp(h->keys[k].section, section) == 0 &&
+            strcmp(h->keys[k].key, key) == 0)
+            return &h->keys[k];
+    return NULL;
 }
 
 int hooks_add_refusal(Hooks *h, const char *key, const char *value,
@@ -33,14 +51,6 @@ int hooks_add_refusal(Hooks *h, const char *key, const char *value,
         return -1;
     h->refusals[h->nrefusals++] = (Refusal){key, value, stage};
     return 0;
-}
-
-const UpdateScheme *hooks_find_scheme(const Hooks *h, const char *name)
-{
-    for (int k = 0; k < h->nschemes; k++)
-        if (strcmp(h->schemes[k].name, name) == 0)
-            return &h->schemes[k];
-    return NULL;
 }
 
 const Refusal *hooks_find_refusal(const Hooks *h, const char *key,
@@ -54,4 +64,118 @@ const Refusal *hooks_find_refusal(const Hooks *h, const char *key,
             return r;
     }
     return NULL;
+}
+
+int hooks_add_choice(Hooks *h, const char *key, const char *name,
+                     const void *impl)
+{
+    if (h->nchoices == HOOKS_MAX)
+        return -1;
+    h->choices[h->nchoices++] = (Choice){key, name, impl};
+    return 0;
+}
+
+const void *hooks_find_choice(const Hooks *h, const char *key,
+                              const char *name)
+{
+    const void *found = NULL;
+    for (int k = 0; k < h->nchoices; k++)
+        if (strcmp(h->choices[k].key, key) == 0 &&
+            (!name || strcmp(h->choices[k].name, name) == 0))
+            found = h->choices[k].impl;
+    return found;
+}
+
+void hooks_list_choices(const Hooks *h, const char *key, char *buf, size_t len)
+{
+    buf[0] = '\0';
+    for (int k = 0; k < h->nchoices; k++) {
+        if (strcmp(h->choices[k].key, key) != 0)
+            continue;
+        if (buf[0])
+            strncat(buf, ", ", len - strlen(buf) - 1);
+        strncat(buf, h->choices[k].name, len - strlen(buf) - 1);
+    }
+}
+
+int hooks_add_field_key(Hooks *h, const char *name, int bits)
+{
+    int shift = 0;
+    for (int k = 0; k < h->nfield_keys; k++)
+        shift += h->field_keys[k].bits;
+    if (h->nfield_keys == HOOKS_MAX || bits < 1 || shift + bits > 31)
+        return -1;
+    h->field_keys[h->nfield_keys++] = (FieldKey){name, shift, bits};
+    return shift;
+}
+
+const FieldKey *hooks_find_field_key(const Hooks *h, const char *name)
+{
+    for (int k = 0; k < h->nfield_keys; k++)
+        if (strcmp(h->field_keys[k].name, name) == 0)
+            return &h->field_keys[k];
+    return NULL;
+}
+
+const UpdateScheme *hooks_find_scheme(const Hooks *h, const char *name)
+{
+    for (int k = 0; k < h->nschemes; k++)
+        if (strcmp(h->schemes[k].name, name) == 0)
+            return &h->schemes[k];
+    return NULL;
+}
+
+/// [subscribe]
+/** Insert @p s into @p l after every subscriber of the same or an earlier
+ *  stage: the list stays in stage order whenever a stage subscribes. */
+static int subscribe(SeamList *l, Subscriber s)
+{
+    if (l->n == HOOKS_MAX)
+        return -1;
+    int k = l->n;
+    while (k > 0 && l->at[k - 1].rank > s.rank) {
+        l->at[k] = l->at[k - 1];
+        k--;
+    }
+    l->at[k] = s;
+    l->n++;
+    return 0;
+}
+/// [subscribe]
+
+int hooks_on_step(Hooks *h, Seam seam, StepHook fn, void *state)
+{
+    Subscriber s = {.fn.step = fn, .state = state, .rank = h->rank};
+    if (seam < SEAM_TASK1_FIELDS || seam > SEAM_TASK7)
+        return -1;
+    return subscribe(&h->seam[seam], s);
+}
+
+int hooks_on_prepare(Hooks *h, PrepareHook fn, void *state)
+{
+    Subscriber s = {.fn.prepare = fn, .state = state, .rank = h->rank};
+    return subscribe(&h->seam[SEAM_PREPARE], s);
+}
+
+int hooks_on_snapshot(Hooks *h, SnapshotHook fn, void *state)
+{
+    Subscriber s = {.fn.snapshot = fn, .state = state, .rank = h->rank};
+    return subscribe(&h->seam[SEAM_SNAPSHOT], s);
+}
+
+int hooks_on_history(Hooks *h, HistoryHook fn, void *state)
+{
+    Subscriber s = {.fn.history = fn, .state = state, .rank = h->rank};
+    return subscribe(&h->seam[SEAM_HISTORY], s);
+}
+
+int hooks_run_step(Sim *sim, Seam seam)
+{
+    const SeamList *l = &sim->hooks.seam[seam];
+    for (int k = 0; k < l->n; k++) {
+        int rc = l->at[k].fn.step(sim, l->at[k].state, seam);
+        if (rc)
+            return rc;
+    }
+    return 0;
 }

@@ -1,95 +1,201 @@
 /**
  * @file hooks.h
- * @brief The seams of the time step where later stages add behaviour.
+ * @brief The seams of the time step where later stages add behaviour, and
+ *        the registries a build fills before it reads a scene.
  *
- * Stage 1 leaves every function pointer NULL: one velocity field, no
- * contact, no cracks.  Each later stage's installer fills the hooks it needs
- * and registers its scene sections and update schemes; the time step calls a
- * hook only when it is set, so a scene that needs none costs what
- * conventional MPM costs.
+ * Two kinds of things live here:
+ * - **registries**, filled by the stages' installers: update schemes,
+ *   methods (the run loop's step), material laws, scene sections and keys
+ *   nested in core sections, field keys, named choices, and refusals of
+ *   what later stages add;
+ * - **seams**: ordered lists of subscribers (a function and its own state)
+ *   at named places of the step and of the output. A stage subscribes when
+ *   a scene needs it (stage 2 only when the scene has a crack), so a scene
+ *   that needs nothing costs what conventional MPM costs. Subscribers run
+ *   in stage order; nothing assigns over another stage's subscriber.
  */
 #ifndef MPM_HOOKS_H
 #define MPM_HOOKS_H
 
 #include <libconfig.h>
 #include <stddef.h>
+#include <stdio.h>
 
 #include "scene.h"
 
 struct Sim;
+struct SceneReader;
 
-/** Most update schemes, scene sections and refusals a build registers. */
+/** Most entries of each registry and subscribers of each seam. */
 #define HOOKS_MAX 16
 
-/** A top-level scene key handled by a stage (for example "cracks"). */
-typedef struct SceneSection {
-    const char *key;    /**< top-level key */
-    /** Parse the setting into the stage's state; write a message and return
-     *  non-zero on error. */
-    int (*parse)(struct Sim *sim, const config_setting_t *s, char *err,
-                 size_t errlen);
-} SceneSection;
+/// [seams]
+/** The named seams. Step seams follow the paper's Tasks (Appendix). */
+typedef enum Seam {
+    SEAM_PREPARE,        /**< after points and grid exist: checks, set-up */
+    SEAM_TASK1_FIELDS,   /**< Task 1: key each pair's velocity field */
+    SEAM_TASK2_CONTACT,  /**< Task 2: adjust momenta (contact) */
+    SEAM_TASK4_CONTACT,  /**< Task 4: adjust momenta after p += dt f */
+    SEAM_TASK6_CONTACT,  /**< Task 6: adjust re-extrapolated momenta */
+    SEAM_TASK7,          /**< Task 7: move cracks, end-of-step work */
+    SEAM_SNAPSHOT,       /**< write extra files with each snapshot */
+    SEAM_HISTORY,        /**< write extra columns of history.csv */
+    SEAM_COUNT           /**< number of seams */
+} Seam;
+
+/** A step seam's subscriber: non-zero (with Sim::fail filled) stops the run. */
+typedef int (*StepHook)(struct Sim *sim, void *state, Seam seam);
+/** A set-up subscriber: write a message and return non-zero to refuse. */
+typedef int (*PrepareHook)(struct Sim *sim, void *state, char *err,
+                           size_t errlen);
+/** A snapshot subscriber: write files for snapshot @p index; 0 or -1. */
+typedef int (*SnapshotHook)(const struct Sim *sim, void *state,
+                            const char *dir, int index);
+/** A history subscriber: write ",name..." (header) or ",value..."; 0 or -1. */
+typedef int (*HistoryHook)(const struct Sim *sim, void *state, FILE *f,
+                           int header);
+
+/** One subscriber: its function (of the seam's type) and its own state. */
+typedef struct Subscriber {
+    union {
+        StepHook step;         /**< SEAM_TASK* */
+        PrepareHook prepare;   /**< SEAM_PREPARE */
+        SnapshotHook snapshot; /**< SEAM_SNAPSHOT */
+        HistoryHook history;   /**< SEAM_HISTORY */
+    } fn;                      /**< the function */
+    void *state;               /**< passed back to it */
+    int rank;                  /**< stage order of its installer */
+} Subscriber;
+
+/** The subscribers of one seam, in stage order. */
+typedef struct SeamList {
+    int n;                        /**< how many */
+    Subscriber at[HOOKS_MAX];     /**< in the order they run */
+} SeamList;
+/// [seams]
+
+/** A scene section (top level) or a key nested in one ("materials",
+ *  "bodies", "run", or a stage's section such as "cracks"). */
+typedef struct SceneKey {
+    const char *section;  /**< "" for a top-level section */
+    const char *key;      /**< the key */
+    /** Read the setting @p s (of entry @p index of a list section, else 0);
+     *  return non-zero with a message in the reader. */
+    int (*parse)(struct Sim *sim, const config_setting_t *s, int index,
+                 struct SceneReader *r);
+    int rank;             /**< stage order */
+} SceneKey;
 
 /** A scene feature this build does not have, and the stage that adds it. */
 typedef struct Refusal {
-    const char *key;    /**< top-level key, or "run.update" for a scheme */
+    const char *key;    /**< "cracks", "materials.friction", "run.update" */
     const char *value;  /**< the refused value, NULL for any */
     const char *stage;  /**< words naming the stage that adds it */
 } Refusal;
 
+/** A named implementation a scene key chooses from ("run.method" = "mpm",
+ *  "materials.law" = "hooke", "cracks.search" = "plain"). */
+typedef struct Choice {
+    const char *key;    /**< the scene key that chooses */
+    const char *name;   /**< the value that names this row */
+    const void *impl;   /**< the row: a Method, a MaterialLaw, ... */
+} Choice;
+
+/** A row of the method table: how the run loop advances one step. */
+typedef struct Method {
+    const char *name;                /**< run.method */
+    int (*step)(struct Sim *sim);    /**< one step; non-zero stops the run */
+} Method;
+
+/** A part of the field key that a stage contributes (bits of a key). */
+typedef struct FieldKey {
+    const char *name;   /**< "crack side", "material", ... */
+    int shift;          /**< its lowest bit */
+    int bits;           /**< its width */
+} FieldKey;
+
 /// [hooks]
-/** Hook table of one build. */
+/** Registries and seams of one build (and, once a scene is read, of that
+ *  scene). */
 typedef struct Hooks {
-    UpdateScheme schemes[HOOKS_MAX];  /**< registered stress-update schemes */
-    int nschemes;                     /**< how many */
-    SceneSection sections[HOOKS_MAX]; /**< registered scene sections */
-    int nsections;                    /**< how many */
-    Refusal refusals[HOOKS_MAX];      /**< features of later stages */
-    int nrefusals;                    /**< how many */
-    /** Grid slots to reserve beyond one per node (extra velocity fields). */
-    int (*extra_slots)(const struct Sim *sim);
-    /** Checks and set-up after the points and the grid exist; write a
-     *  message and return non-zero to refuse the scene. */
-    int (*prepare)(struct Sim *sim, char *err, size_t errlen);
-    /** Task 1: assign a velocity field to every particle-node pair;
-     *  non-zero (with Sim::fail filled) stops the run. */
-    int (*assign_fields)(struct Sim *sim);
-    /** Map the four pairs of point p (nodes in slot[]) to their field slots. */
-    void (*pair_slots)(const struct Sim *sim, int p, int slot[4]);
-    /** Tasks 2, 4 and 6: adjust nodal momenta for contact; non-zero stops
-     *  the run. */
-    int (*contact)(struct Sim *sim, int task);
-    /** Task 7: move the cracks with the centre-of-mass grid velocity;
-     *  non-zero stops the run. */
-    int (*move_cracks)(struct Sim *sim);
-    /** Extra columns of history.csv: header (row = NULL) or values. */
-    void (*history_columns)(const struct Sim *sim, char *buf, size_t len,
-                            int header);
-    /** Extra output written with every snapshot. */
-    void (*snapshot)(const struct Sim *sim, const char *dir, int index);
-    /** Release the stages' state. */
-    void (*release)(struct Sim *sim);
+    UpdateScheme schemes[HOOKS_MAX]; /**< stress-update schemes */
+    int nschemes;                    /**< how many */
+    SceneKey keys[HOOKS_MAX];        /**< sections and nested keys */
+    int nkeys;                       /**< how many */
+    Refusal refusals[HOOKS_MAX];     /**< features of later stages */
+    int nrefusals;                   /**< how many */
+    Choice choices[HOOKS_MAX];       /**< methods, laws, searches */
+    int nchoices;                    /**< how many */
+    FieldKey field_keys[HOOKS_MAX];  /**< parts of the field key */
+    int nfield_keys;                 /**< how many */
+    SeamList seam[SEAM_COUNT];       /**< subscribers of each seam */
+    int rank;                        /**< stage order of what is added now */
 } Hooks;
 /// [hooks]
+
+/** @brief Mark what is registered or subscribed from now on as the
+ *         @p rank-th stage's (stage order; stages.c alone calls it). */
+void hooks_begin_stage(Hooks *h, int rank);
 
 /** @brief Register a stress-update scheme. @return 0, or -1 when full. */
 int hooks_add_scheme(Hooks *h, const char *name, double before, double after,
                      int reextrapolate);
 
-/** @brief Register a top-level scene section. @return 0, or -1 when full. */
-int hooks_add_section(Hooks *h, const char *key,
-                      int (*parse)(struct Sim *, const config_setting_t *,
-                                   char *, size_t));
+/** @brief Register a top-level scene section (@p section = "") or a key
+ *         nested in @p section. @return 0, or -1 when full. */
+int hooks_add_key(Hooks *h, const char *section, const char *key,
+                  int (*parse)(struct Sim *, const config_setting_t *, int,
+                               struct SceneReader *));
+
+/** @brief The registered key @p key of @p section, or NULL. */
+const SceneKey *hooks_find_key(const Hooks *h, const char *section,
+                               const char *key);
 
 /** @brief Record a feature this build refuses, naming its stage. */
 int hooks_add_refusal(Hooks *h, const char *key, const char *value,
                       const char *stage);
 
-/** @brief The scheme called @p name, or NULL. */
-const UpdateScheme *hooks_find_scheme(const Hooks *h, const char *name);
-
 /** @brief The refusal for @p key (and @p value, if it has one), or NULL. */
 const Refusal *hooks_find_refusal(const Hooks *h, const char *key,
                                   const char *value);
+
+/** @brief Register row @p name of the table chosen by scene key @p key. */
+int hooks_add_choice(Hooks *h, const char *key, const char *name,
+                     const void *impl);
+
+/** @brief The row @p name of table @p key, or NULL; @p name NULL gives the
+ *         last registered row (the latest stage's). */
+const void *hooks_find_choice(const Hooks *h, const char *key,
+                              const char *name);
+
+/** @brief Write the names of table @p key, comma separated, into @p buf. */
+void hooks_list_choices(const Hooks *h, const char *key, char *buf,
+                        size_t len);
+
+/** @brief Reserve @p bits bits of the field key for @p name.
+ *  @return the shift of the part, or -1 when the key has no room. */
+int hooks_add_field_key(Hooks *h, const char *name, int bits);
+
+/** @brief The part of the field key called @p name, or NULL. */
+const FieldKey *hooks_find_field_key(const Hooks *h, const char *name);
+
+/** @brief The scheme called @p name, or NULL. */
+const UpdateScheme *hooks_find_scheme(const Hooks *h, const char *name);
+
+/** @brief Subscribe @p fn with @p state to step seam @p seam. @return 0/-1. */
+int hooks_on_step(Hooks *h, Seam seam, StepHook fn, void *state);
+
+/** @brief Subscribe to SEAM_PREPARE. @return 0 or -1. */
+int hooks_on_prepare(Hooks *h, PrepareHook fn, void *state);
+
+/** @brief Subscribe to SEAM_SNAPSHOT. @return 0 or -1. */
+int hooks_on_snapshot(Hooks *h, SnapshotHook fn, void *state);
+
+/** @brief Subscribe to SEAM_HISTORY. @return 0 or -1. */
+int hooks_on_history(Hooks *h, HistoryHook fn, void *state);
+
+/** @brief Run the subscribers of step seam @p seam in order; stop at the
+ *         first that fails. @return 0 or its non-zero value. */
+int hooks_run_step(struct Sim *sim, Seam seam);
 
 #endif

@@ -1,16 +1,27 @@
 /**
  * @file material.h
- * @brief Isotropic linear elasticity in plane stress or plane strain.
+ * @brief Materials and the table of constitutive laws; stage 1 registers
+ *        isotropic linear elasticity (Hooke's law) in plane stress or
+ *        plane strain.
  */
 #ifndef MPM_MATERIAL_H
 #define MPM_MATERIAL_H
 
+#include <libconfig.h>
+
+struct SceneReader;
+struct MaterialLaw;
+
+/** Parameters a material law added by a later stage may keep. */
+#define MATERIAL_PARAMS 8
+
 /** Two-dimensional idealisation of the third direction. */
 typedef enum { PLANE_STRESS = 0, PLANE_STRAIN = 1 } PlaneKind;
 
-/** An isotropic elastic material and its derived plane stiffnesses. */
+/** A material: its law, density, and the law's parameters. */
 typedef struct Material {
     char name[64];  /**< name used by bodies in the scene */
+    const struct MaterialLaw *law; /**< its constitutive law (materials.law) */
     double E;       /**< Young's modulus (MPa) */
     double nu;      /**< Poisson's ratio */
     double rho;     /**< density (g/mm^3) */
@@ -20,7 +31,26 @@ typedef struct Material {
     double czz;     /**< plane strain: sigma_zz = czz (eps_xx + eps_yy); 0 otherwise */
     double ezz;     /**< plane stress: eps_zz = ezz (eps_xx + eps_yy); 0 otherwise */
     double wave;    /**< fastest (dilatational) plane wave speed sqrt(c11 / rho) */
+    double par[MATERIAL_PARAMS]; /**< parameters of other laws */
 } Material;
+
+/// [material_law]
+/** A row of the constitutive-law table (materials.law = "name"). */
+typedef struct MaterialLaw {
+    const char *name;              /**< value of materials.law */
+    const char *const *keys;       /**< its keys in a material, NULL-ended */
+    /** Read and check its keys of material group @p g; 0 or -1. */
+    int (*read)(struct SceneReader *r, const config_setting_t *g, Material *m);
+    /** Derived constants and Material::wave for the plane idealisation. */
+    void (*prepare)(Material *m, PlaneKind plane);
+    /** Stress increment for a strain increment (eq. 36): s += ... */
+    void (*stress)(const Material *m, double dexx, double deyy, double dexy,
+                   double s[3]);
+} MaterialLaw;
+/// [material_law]
+
+/** @brief Hooke's law, the row stage 1 registers as "hooke". */
+extern const MaterialLaw material_hooke;
 
 /** @brief Fill the derived stiffnesses and wave speed of @p mat for @p plane. */
 void material_prepare(Material *mat, PlaneKind plane);

@@ -8,7 +8,6 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "shape.h"
 #include "step.h"
 
 int output_make_dir(const char *dir)
@@ -28,16 +27,22 @@ int output_make_dir(const char *dir)
     return 0;
 }
 
+/** The stages' columns of history.csv (SEAM_HISTORY, in order). */
+static int history_columns(const Sim *sim, FILE *f, int header)
+{
+    const SeamList *l = &sim->hooks.seam[SEAM_HISTORY];
+    int rc = 0;
+    for (int k = 0; k < l->n; k++)
+        rc |= l->at[k].fn.history(sim, l->at[k].state, f, header);
+    return rc;
+}
+
 void output_history_header(const Sim *sim, FILE *f)
 {
     fprintf(f, "step,time,kinetic,strain,total,momentum_x,momentum_y");
     for (int b = 0; b < sim->scene.nbodies; b++)
         fprintf(f, ",kinetic_%s", sim->scene.bodies[b].name);
-    if (sim->hooks.history_columns) {
-        char buf[512] = "";
-        sim->hooks.history_columns(sim, buf, sizeof buf, 1);
-        fputs(buf, f);
-    }
+    history_columns(sim, f, 1);
     fputc('\n', f);
 }
 
@@ -53,11 +58,7 @@ void output_history_row(Sim *sim, FILE *f)
             t.kinetic, t.strain, t.kinetic + t.strain, t.px, t.py);
     for (int b = 0; b < sim->scene.nbodies; b++)
         fprintf(f, ",%.10g", sim->bodyke[b]);
-    if (sim->hooks.history_columns) {
-        char buf[512] = "";
-        sim->hooks.history_columns(sim, buf, sizeof buf, 0);
-        fputs(buf, f);
-    }
+    history_columns(sim, f, 0);
     fputc('\n', f);
 }
 
@@ -132,18 +133,16 @@ int output_grid_csv(Sim *sim, const char *path)
     memset(g->fx, 0, bytes);
     memset(g->fy, 0, bytes);
     memset(g->px, 0, bytes);
-    locate_points(sim);
     for (int p = 0; p < P->n; p++) {
-        double S[4], Gx[4], Gy[4];
-        int n[4];
-        shape_linear(P->xi[p], P->eta[p], g->idx, g->idy, S, Gx, Gy);
-        shape_cell_nodes(g, P->cell[p], n);
-        for (int a = 0; a < 4; a++) {
-            double w = P->m[p] * S[a];
-            g->m[n[a]] += w;
-            g->fx[n[a]] += w * P->sxx[p];
-            g->fy[n[a]] += w * P->syy[p];
-            g->px[n[a]] += w * P->sxy[p];
+        Stencil st;                      /* all fields of a node together */
+        stencil_at(g, P->x[p], P->y[p], &st);
+        for (int a = 0; a < STENCIL_NODES; a++) {
+            int n = st.slot[a];
+            double w = P->m[p] * st.S[a];
+            g->m[n] += w;
+            g->fx[n] += w * P->sxx[p];
+            g->fy[n] += w * P->syy[p];
+            g->px[n] += w * P->sxy[p];
         }
     }
     FILE *f = fopen(path, "w");
@@ -187,8 +186,10 @@ int output_snapshot(Sim *sim, const char *dir, int index, const double *times)
     snprintf(path, sizeof path, "%s/grid_%05d.csv", dir, index);
     if (output_grid_csv(sim, path))
         return -1;
-    if (sim->hooks.snapshot)
-        sim->hooks.snapshot(sim, dir, index);
+    const SeamList *l = &sim->hooks.seam[SEAM_SNAPSHOT];
+    for (int k = 0; k < l->n; k++)
+        if (l->at[k].fn.snapshot(sim, l->at[k].state, dir, index))
+            return -1;
     /* rewrite the series so that it is complete after every snapshot */
     snprintf(path, sizeof path, "%s/particles.pvd", dir);
     FILE *f = fopen(path, "w");

@@ -66,7 +66,7 @@ int sim_run(Sim *sim, const char *outdir, int progress)
             rc = 2;
     }
     while (rc == 0 && sim->step < sim->nsteps) {
-        if (sim_step(sim)) {
+        if (sim_advance(sim)) {
             const Failure *f = &sim->fail;
             if (progress)
                 fputc('\n', stderr);

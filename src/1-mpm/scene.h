@@ -76,6 +76,7 @@ typedef struct RunSettings {
     double gx;          /**< body force per unit mass x (mm/ms^2) */
     double gy;          /**< body force per unit mass y (mm/ms^2) */
     const UpdateScheme *scheme; /**< stress-update scheme */
+    const struct Method *method; /**< how a step is taken (run.method) */
     int snapshots;      /**< number of particle/grid snapshots after t = 0 */
     int history_every;  /**< steps between history rows (0 = automatic) */
 } RunSettings;

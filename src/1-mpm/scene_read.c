@@ -100,26 +100,83 @@ int scene_string(SceneReader *r, const config_setting_t *group,
     return 1;
 }
 
-int scene_check_keys(SceneReader *r, const config_setting_t *group,
-                     const char *const *allowed)
+/** Is @p name one of the NULL-ended @p list (which may be NULL)? */
+static int in_list(const char *const *list, const char *name)
+{
+    for (const char *const *a = list; a && *a; a++)
+        if (strcmp(*a, name) == 0)
+            return 1;
+    return 0;
+}
+
+/** Append the NULL-ended @p list to the comma-separated @p buf. */
+static void append_list(char *buf, size_t len, const char *const *list)
+{
+    for (const char *const *a = list; a && *a; a++) {
+        if (buf[0])
+            strncat(buf, ", ", len - strlen(buf) - 1);
+        strncat(buf, *a, len - strlen(buf) - 1);
+    }
+}
+
+/// [scene_check_open_keys]
+int scene_check_open_keys(SceneReader *r, const Hooks *h, const char *section,
+                          const config_setting_t *group,
+                          const char *const *core, const char *const *more)
 {
     int n = config_setting_length(group);
     for (int k = 0; k < n; k++) {
         const config_setting_t *s = config_setting_get_elem(group, (unsigned)k);
         const char *name = config_setting_name(s);
-        int ok = 0;
-        for (const char *const *a = allowed; *a && !ok; a++)
-            ok = name && strcmp(name, *a) == 0;
-        if (!ok) {
-            char list[256] = "";
-            for (const char *const *a = allowed; *a; a++) {
-                strncat(list, *a, sizeof list - strlen(list) - 1);
-                if (a[1])
-                    strncat(list, ", ", sizeof list - strlen(list) - 1);
+        if (!name)
+            return scene_error(r, s, "?", "expected key = value");
+        if (in_list(core, name) || in_list(more, name) ||
+            (h && hooks_find_key(h, section, name)))
+            continue;
+        char path[128];
+        snprintf(path, sizeof path, "%s.%s", section, name);
+        const Refusal *why = h ? hooks_find_refusal(h, path, NULL) : NULL;
+        if (why)
+            return scene_error(r, s, name, "this key needs %s; this build "
+                               "does not have it", why->stage);
+        char list[512] = "";
+        append_list(list, sizeof list, core);
+        append_list(list, sizeof list, more);
+        for (int j = 0; h && j < h->nkeys; j++)
+            if (strcmp(h->keys[j].section, section) == 0) {
+                const char *one[] = {h->keys[j].key, NULL};
+                append_list(list, sizeof list, one);
             }
-            return scene_error(r, s, name ? name : "?",
-                               "unknown key (expected one of: %s)", list);
-        }
+        return scene_error(r, s, name, "unknown key (expected one of: %s)", list);
+    }
+    return 0;
+}
+/// [scene_check_open_keys]
+
+int scene_check_keys(SceneReader *r, const config_setting_t *group,
+                     const char *const *allowed)
+{
+    return scene_check_open_keys(r, NULL, "", group, allowed, NULL);
+}
+
+int scene_read_open_keys(Sim *sim, SceneReader *r, const char *section,
+                         const config_setting_t *group, int index)
+{
+    const Hooks *h = &sim->hooks;
+    /* sim->hooks.keys does not change while it is read */
+    for (int k = 0; k < h->nkeys; k++) {
+        const SceneKey *key = &h->keys[k];
+        if (strcmp(key->section, section) != 0)
+            continue;
+        const config_setting_t *s = config_setting_get_member(group, key->key);
+        if (!s)
+            continue;
+        int rank = sim->hooks.rank;        /* it subscribes as its stage */
+        hooks_begin_stage(&sim->hooks, key->rank);
+        int rc = key->parse(sim, s, index, r);
+        hooks_begin_stage(&sim->hooks, rank);
+        if (rc)
+            return -1;
     }
     return 0;
 }
@@ -249,6 +306,26 @@ int scene_shape(SceneReader *r, const config_setting_t *group, Shape *out)
     return read_polygon(r, found, out);
 }
 
+int scene_choice(SceneReader *r, const Hooks *h, const config_setting_t *group,
+                 const char *section, const char *key, const char *name,
+                 const void **out)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s.%s", section, key);
+    *out = hooks_find_choice(h, path, name);
+    if (*out)
+        return 0;
+    const config_setting_t *s = config_setting_get_member(group, key);
+    const Refusal *why = hooks_find_refusal(h, path, name);
+    if (why)
+        return scene_error(r, s ? s : group, key, "\"%s\" is added by %s; this "
+                           "build does not have it", name, why->stage);
+    char list[256];
+    hooks_list_choices(h, path, list, sizeof list);
+    return scene_error(r, s ? s : group, key, "\"%s\" is not known (expected "
+                       "one of: %s)", name, list);
+}
+
 static int read_grid(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
     static const char *const keys[] = {"origin", "cells", "cell_size", NULL};
@@ -279,14 +356,14 @@ static int read_grid(Sim *sim, SceneReader *r, const config_setting_t *root)
 static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
     static const char *const keys[] = {"time", "cfl", "allow_cfl_above_one",
-        "update", "damping", "plane", "gravity", "snapshots", "history_every",
-        NULL};
+        "update", "method", "damping", "plane", "gravity", "snapshots",
+        "history_every", NULL};
     int st;
     const config_setting_t *g = group_of(r, root, "run", 1, &st);
     RunSettings *run = &sim->scene.run;
     double gr[2] = {0, 0}, snaps, hist;
-    const char *update = "musl", *plane = "stress";
-    if (!g || scene_check_keys(r, g, keys) ||
+    const char *update = "musl", *plane = "stress", *method = "mpm";
+    if (!g || scene_check_open_keys(r, &sim->hooks, "run", g, keys, NULL) ||
         scene_number(r, g, "time", 1, 0, &run->time) < 0 ||
         scene_number(r, g, "cfl", 0, 0.5, &run->cfl) < 0 ||
         scene_number(r, g, "damping", 0, 0.0, &run->damping) < 0 ||
@@ -294,7 +371,11 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         scene_number(r, g, "snapshots", 0, 10, &snaps) < 0 ||
         scene_number(r, g, "history_every", 0, 0, &hist) < 0 ||
         scene_string(r, g, "update", 0, &update) < 0 ||
+        scene_string(r, g, "method", 0, &method) < 0 ||
         scene_string(r, g, "plane", 0, &plane) < 0)
+        return -1;
+    if (scene_choice(r, &sim->hooks, g, "run", "method", method,
+                     (const void **)&run->method))
         return -1;
     const config_setting_t *ins = config_setting_get_member(g, "allow_cfl_above_one");
     if (ins && config_setting_type(ins) != CONFIG_TYPE_BOOL)
@@ -346,12 +427,13 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         return scene_error(r, u, "update", "\"%s\" is not a stress-update "
                            "scheme (expected one of: %s)", update, list);
     }
-    return 0;
+    return scene_read_open_keys(sim, r, "run", g, 0);
 }
 
+/// [read_materials]
 static int read_materials(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
-    static const char *const keys[] = {"name", "E", "nu", "rho", NULL};
+    static const char *const keys[] = {"name", "law", "rho", NULL};
     const config_setting_t *l = config_setting_get_member(root, "materials");
     Scene *sc = &sim->scene;
     if (!l)
@@ -365,31 +447,31 @@ static int read_materials(Sim *sim, SceneReader *r, const config_setting_t *root
     for (int k = 0; k < sc->nmat; k++) {
         const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
         Material *m = &sc->mat[k];
-        const char *name;
+        const char *name, *law = "hooke";
         if (config_setting_type(g) != CONFIG_TYPE_GROUP)
             return scene_error(r, g, "materials", "entry %d: expected a group", k);
-        if (scene_check_keys(r, g, keys) || scene_string(r, g, "name", 1, &name) < 0 ||
-            scene_number(r, g, "E", 1, 0, &m->E) < 0 ||
-            scene_number(r, g, "nu", 1, 0, &m->nu) < 0 ||
-            scene_number(r, g, "rho", 1, 0, &m->rho) < 0)
+        if (scene_string(r, g, "law", 0, &law) < 0 ||
+            scene_choice(r, &sim->hooks, g, "materials", "law", law,
+                         (const void **)&m->law) ||
+            scene_check_open_keys(r, &sim->hooks, "materials", g, keys,
+                                  m->law->keys) ||
+            scene_string(r, g, "name", 1, &name) < 0 ||
+            scene_number(r, g, "rho", 1, 0, &m->rho) < 0 || m->law->read(r, g, m))
             return -1;
         snprintf(m->name, sizeof m->name, "%s", name);
         for (int j = 0; j < k; j++)
             if (strcmp(sc->mat[j].name, m->name) == 0)
                 return scene_error(r, g, "name", "material \"%s\" defined twice", name);
-        if (!(m->E > 0))
-            return scene_error(r, config_setting_get_member(g, "E"), "E",
-                               "%g: Young's modulus must be > 0", m->E);
-        if (!(m->nu > -1 && m->nu < 0.5))
-            return scene_error(r, config_setting_get_member(g, "nu"), "nu",
-                               "%g: Poisson's ratio must lie in (-1, 0.5)", m->nu);
         if (!(m->rho > 0))
             return scene_error(r, config_setting_get_member(g, "rho"), "rho",
                                "%g: density must be > 0 (g/mm^3)", m->rho);
-        material_prepare(m, sc->run.plane);
+        m->law->prepare(m, sc->run.plane);
+        if (scene_read_open_keys(sim, r, "materials", g, k))
+            return -1;
     }
     return 0;
 }
+/// [read_materials]
 
 static int inside_grid(const Scene *sc, const Shape *s)
 {
@@ -421,7 +503,8 @@ static int read_bodies(Sim *sim, SceneReader *r, const config_setting_t *root)
             return scene_error(r, g, "bodies", "entry %d: expected a group", k);
         sc->nbodies = k + 1;
         b->line = (int)config_setting_source_line(g);
-        if (scene_check_keys(r, g, keys) || scene_string(r, g, "name", 0, &name) < 0 ||
+        if (scene_check_open_keys(r, &sim->hooks, "bodies", g, keys, NULL) ||
+            scene_string(r, g, "name", 0, &name) < 0 ||
             scene_string(r, g, "material", 1, &mat) < 0 ||
             scene_number(r, g, "thickness", 0, 1.0, &b->thickness) < 0 ||
             scene_pair(r, g, "velocity", 0, v) < 0 ||
@@ -459,6 +542,8 @@ static int read_bodies(Sim *sim, SceneReader *r, const config_setting_t *root)
                                b->shape.xmin, b->shape.xmax, b->shape.ymin,
                                b->shape.ymax, sc->ox, sc->ox + sc->ncx * sc->dx,
                                sc->oy, sc->oy + sc->ncy * sc->dy);
+        if (scene_read_open_keys(sim, r, "bodies", g, k))
+            return -1;
     }
     return 0;
 }
@@ -541,39 +626,34 @@ static int read_loads(Sim *sim, SceneReader *r, const config_setting_t *root)
 int scene_read(Sim *sim, const config_t *cfg, SceneReader *r)
 {
     static const char *const core[] = {"grid", "run", "materials", "bodies",
-                                       "boundaries", "loads"};
+                                       "boundaries", "loads", NULL};
     const config_setting_t *root = config_root_setting(cfg);
     snprintf(sim->scene.file, sizeof sim->scene.file, "%s", r->file);
     /* every top-level key: ours, a stage's section, a later stage's, or a typo */
     for (int k = 0; k < config_setting_length(root); k++) {
         const config_setting_t *s = config_setting_get_elem(root, (unsigned)k);
         const char *name = config_setting_name(s);
-        int known = 0;
-        for (size_t c = 0; c < sizeof core / sizeof core[0]; c++)
-            known |= strcmp(name, core[c]) == 0;
-        for (int c = 0; c < sim->hooks.nsections; c++)
-            known |= strcmp(name, sim->hooks.sections[c].key) == 0;
-        if (known)
+        if (in_list(core, name) || hooks_find_key(&sim->hooks, "", name))
             continue;
         const Refusal *why = hooks_find_refusal(&sim->hooks, name, NULL);
         if (why)
             return scene_error(r, s, name, "this scene needs %s; this build "
                                "does not have it", why->stage);
-        return scene_error(r, s, name, "unknown key (expected grid, run, "
-                           "materials, bodies, boundaries, loads%s)",
-                           sim->hooks.nsections ? " or a stage's section" : "");
+        char list[256] = "";
+        append_list(list, sizeof list, core);
+        for (int j = 0; j < sim->hooks.nkeys; j++)
+            if (!sim->hooks.keys[j].section[0]) {
+                const char *one[] = {sim->hooks.keys[j].key, NULL};
+                append_list(list, sizeof list, one);
+            }
+        return scene_error(r, s, name, "unknown key (expected one of: %s)", list);
     }
     if (read_grid(sim, r, root) || read_run(sim, r, root) ||
         read_materials(sim, r, root) || read_bodies(sim, r, root) ||
         read_boundaries(sim, r, root) || read_loads(sim, r, root))
         return -1;
-    for (int c = 0; c < sim->hooks.nsections; c++) {
-        const config_setting_t *s =
-            config_setting_get_member(root, sim->hooks.sections[c].key);
-        if (s && sim->hooks.sections[c].parse(sim, s, r->err, r->errlen))
-            return -1;
-    }
-    return 0;
+    /* the stages' sections, in stage order */
+    return scene_read_open_keys(sim, r, "", root, 0);
 }
 
 /* ---- command-line overrides "a.b.c=value" -------------------------------- */

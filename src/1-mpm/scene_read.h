@@ -45,10 +45,35 @@ int scene_check_keys(SceneReader *r, const config_setting_t *group,
                      const char *const *allowed);
 
 /**
+ * @brief Refuse any member of @p group (an entry of scene section
+ *        @p section) that is neither in @p core or @p more (NULL-ended,
+ *        either may be NULL) nor registered for @p section by a stage of
+ *        this build; a key a later stage adds is refused naming the stage.
+ */
+int scene_check_open_keys(SceneReader *r, const Hooks *h, const char *section,
+                          const config_setting_t *group,
+                          const char *const *core, const char *const *more);
+
+/** @brief Call the parser of every key the stages registered for
+ *         @p section that @p group (entry @p index) holds. @return 0 or -1. */
+int scene_read_open_keys(Sim *sim, SceneReader *r, const char *section,
+                         const config_setting_t *group, int index);
+
+/**
  * @brief Read a shape: exactly one of rectangle, disk or polygon in @p group.
  * @return 0 or -1.
  */
 int scene_shape(SceneReader *r, const config_setting_t *group, Shape *out);
+
+/**
+ * @brief The row @p name of the table chosen by @p section.@p key (a
+ *        method, a material law, ...) into *out; refused with the names
+ *        of the rows this build has, or the stage that adds @p name.
+ * @return 0 or -1.
+ */
+int scene_choice(SceneReader *r, const Hooks *h, const config_setting_t *group,
+                 const char *section, const char *key, const char *name,
+                 const void **out);
 
 /** @brief Fill sim->scene from @p cfg and call the stages' scene sections.
  *  @return 0, or -1 with a message. */

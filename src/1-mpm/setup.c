@@ -63,11 +63,11 @@ int setup_points(Sim *sim, char *err, size_t errlen)
     return 0;
 }
 
-int setup_grid(Sim *sim, int extra_slots, char *err, size_t errlen)
+int setup_grid(Sim *sim, char *err, size_t errlen)
 {
     Scene *sc = &sim->scene;
     Grid *g = &sim->grid;
-    if (grid_init(g, sc->ox, sc->oy, sc->dx, sc->dy, sc->ncx, sc->ncy, extra_slots)) {
+    if (grid_init(g, sc->ox, sc->oy, sc->dx, sc->dy, sc->ncx, sc->ncy)) {
         snprintf(err, errlen, "%s: out of memory for the grid", sc->file);
         return -1;
     }

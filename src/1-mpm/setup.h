@@ -12,9 +12,10 @@
 /** @brief Generate the material points of every body. @return 0 or -1. */
 int setup_points(Sim *sim, char *err, size_t errlen);
 
-/** @brief Allocate the grid with @p extra_slots field slots and mark the
- *         fixed nodes. @return 0 or -1. */
-int setup_grid(Sim *sim, int extra_slots, char *err, size_t errlen);
+/** @brief Allocate the grid (one field slot per node; the field table
+ *         adds more when a step needs them) and mark the fixed nodes.
+ *  @return 0 or -1. */
+int setup_grid(Sim *sim, char *err, size_t errlen);
 
 /** @brief Find the points each load acts on. @return 0 or -1. */
 int setup_loads(Sim *sim, char *err, size_t errlen);

@@ -8,6 +8,9 @@
 
 #include "grid.h"
 
+/** Nodes a point's shape functions reach (bilinear: the cell's four). */
+#define STENCIL_NODES 4
+
 /**
  * @brief Values and gradients of the four shape functions of one cell.
  *
@@ -48,7 +51,8 @@ static inline int shape_locate(const Grid *g, double x, double y,
 }
 
 /** @brief The four nodes of the cell whose lower-left node is @p cell. */
-static inline void shape_cell_nodes(const Grid *g, int cell, int node[4])
+static inline void shape_cell_nodes(const Grid *g, int cell,
+                                    int node[STENCIL_NODES])
 {
     node[0] = cell;
     node[1] = cell + 1;

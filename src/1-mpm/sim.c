@@ -17,6 +17,42 @@ void sim_init(Sim *sim)
     memset(sim, 0, sizeof *sim);
 }
 
+int sim_attach(Sim *sim, const char *name, void *state,
+               void (*release)(void *state))
+{
+    if (sim->next == SIM_MAX_EXT)
+        return -1;
+    sim->ext[sim->next++] = (SimExt){name, state, release};
+    return 0;
+}
+
+void *sim_state(const Sim *sim, const char *name)
+{
+    for (int k = 0; k < sim->next; k++)
+        if (strcmp(sim->ext[k].name, name) == 0)
+            return sim->ext[k].state;
+    return NULL;
+}
+
+/** Set-up after points and grid exist: the field table and the arrays the
+ *  seams need, then the stages' own checks (SEAM_PREPARE, in order). */
+static int prepare_stages(Sim *sim, const char *name, char *err, size_t errlen)
+{
+    const Hooks *h = &sim->hooks;
+    if ((h->seam[SEAM_TASK1_FIELDS].n && fields_enable(sim)) ||
+        (h->seam[SEAM_TASK4_CONTACT].n &&
+         (grid_want(&sim->grid, &sim->grid.qx) ||
+          grid_want(&sim->grid, &sim->grid.qy)))) {
+        snprintf(err, errlen, "%s: out of memory for the velocity fields", name);
+        return -1;
+    }
+    const SeamList *l = &h->seam[SEAM_PREPARE];
+    for (int k = 0; k < l->n; k++)
+        if (l->at[k].fn.prepare(sim, l->at[k].state, err, errlen))
+            return -1;
+    return 0;
+}
+
 /** Read the tree, then build points, grid, loads and the time step. */
 static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
                        size_t errlen)
@@ -24,11 +60,8 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
     SceneReader r = {name, err, errlen};
     if (scene_read(sim, cfg, &r))
         return -1;
-    int extra = sim->hooks.extra_slots ? sim->hooks.extra_slots(sim) : 0;
-    if (setup_points(sim, err, errlen) || setup_grid(sim, extra, err, errlen) ||
-        setup_loads(sim, err, errlen))
-        return -1;
-    if (sim->hooks.prepare && sim->hooks.prepare(sim, err, errlen))
+    if (setup_points(sim, err, errlen) || setup_grid(sim, err, errlen) ||
+        setup_loads(sim, err, errlen) || prepare_stages(sim, name, err, errlen))
         return -1;
     sim->bodyke = calloc((size_t)sim->scene.nbodies, sizeof(double));
     if (!sim->bodyke) {
@@ -108,8 +141,11 @@ Totals sim_totals(const Sim *sim)
 
 void sim_free(Sim *sim)
 {
-    if (sim->hooks.release)
-        sim->hooks.release(sim);
+    for (int k = sim->next - 1; k >= 0; k--)
+        if (sim->ext[k].release)
+            sim->ext[k].release(sim->ext[k].state);
+    sim->next = 0;
+    fields_free(&sim->fields);
     particles_free(&sim->pts);
     grid_free(&sim->grid);
     scene_free(&sim->scene);

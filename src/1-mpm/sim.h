@@ -8,13 +8,21 @@
 
 #include <stddef.h>
 
+#include "field_table.h"
 #include "grid.h"
 #include "hooks.h"
 #include "particles.h"
 #include "scene.h"
 
-/** Number of per-stage state pointers a simulation carries. */
+/** Most pieces of stage state a simulation carries. */
 #define SIM_MAX_EXT 8
+
+/** A piece of state a stage attached to the simulation, found by name. */
+typedef struct SimExt {
+    const char *name;            /**< "cracks", ... */
+    void *state;                 /**< owned by the stage */
+    void (*release)(void *state); /**< frees it (sim_free, in reverse order) */
+} SimExt;
 
 /** Why a run stopped early: the step, the point and the quantity. */
 typedef struct Failure {
@@ -31,7 +39,9 @@ typedef struct Sim {
     Particles pts;      /**< material points */
     Grid grid;          /**< background grid */
     Hooks hooks;        /**< behaviour added by the stages of this build */
-    void *ext[SIM_MAX_EXT]; /**< state of stage N lives in ext[N] */
+    FieldTable fields;  /**< velocity fields of the nodes (Task 1) */
+    SimExt ext[SIM_MAX_EXT]; /**< the stages' state, by name */
+    int next;           /**< how many */
     double t;           /**< current time (ms) */
     double dt;          /**< time step (ms) */
     long step;          /**< steps taken */
@@ -52,6 +62,14 @@ typedef struct Totals {
 /** @brief Zero a simulation; the caller then installs the stages' hooks. */
 void sim_init(Sim *sim);
 
+/** @brief Attach a stage's @p state under @p name; @p release frees it
+ *         with the simulation. @return 0, or -1 when full (nothing kept). */
+int sim_attach(Sim *sim, const char *name, void *state,
+               void (*release)(void *state));
+
+/** @brief The state attached under @p name, or NULL. */
+void *sim_state(const Sim *sim, const char *name);
+
 /**
  * @brief Read a scene file, apply "key.path=value" overrides, generate the
  *        points and prepare the grid and the time step.
@@ -71,10 +89,14 @@ int sim_load_string(Sim *sim, const char *text, const char *name,
 void sim_set_time_step(Sim *sim);
 
 /**
- * @brief Take one time step (Tasks 0-8).
+ * @brief Take one MPM time step (Tasks 0-8): the "mpm" row of the method
+ *        table.
  * @return 0, or non-zero when the run went unstable (see Sim::fail).
  */
 int sim_step(Sim *sim);
+
+/** @brief Take one step with the scene's method (run.method). */
+int sim_advance(Sim *sim);
 
 /** @brief Energies and momentum of the points now. */
 Totals sim_totals(const Sim *sim);

@@ -1,12 +1,20 @@
 /**
  * @file stage1.c
- * @brief Stage 1 installs the three classical stress-update schemes.
+ * @brief Stage 1 registers the MPM step, Hooke's law and the three
+ *        classical stress-update schemes.
  */
 #include "stage1.h"
+
+#include "sim.h"
+
+/** The MPM step of the Appendix (Tasks 0-8): the method "mpm". */
+static const Method mpm_method = {"mpm", sim_step};
 
 /// [stage1_install]
 void stage1_install(Hooks *h)
 {
+    hooks_add_choice(h, "run.method", "mpm", &mpm_method);
+    hooks_add_choice(h, "materials.law", "hooke", &material_hooke);
     /*                   name    Task 2  Task 6  re-extrapolate (Task 6c) */
     hooks_add_scheme(h, "usl",  0.0,    1.0,    0);  /* Sulsky et al. 1994 */
     hooks_add_scheme(h, "musl", 0.0,    1.0,    1);  /* Sulsky et al. 1995 */

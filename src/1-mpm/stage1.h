@@ -7,7 +7,8 @@
 
 #include "hooks.h"
 
-/** @brief Register USL, MUSL and USF; leave every other hook empty. */
+/** @brief Register the MPM method, Hooke's law, USL, MUSL and USF;
+ *         subscribe to no seam. */
 void stage1_install(Hooks *h);
 
 #endif

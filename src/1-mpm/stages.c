@@ -1,6 +1,8 @@
 /**
  * @file stages.c
- * @brief The stages of this build, chosen at compile time by MPM_STAGE.
+ * @brief The stages of this build, chosen at compile time by MPM_STAGE:
+ *        the one file compiled with it (the Makefile passes -DMPM_STAGE=N
+ *        to this file alone, with -Wundef).
  *
  * Stage N's folder provides stageN.h with stageN_install(); a build with
  * MPM_STAGE = N compiles the folders of stages 1..N only, so the lines for
@@ -10,10 +12,6 @@
 
 #include "stage1.h"
 
-#ifndef MPM_STAGE
-/** Last stage of this build; the Makefile passes -DMPM_STAGE=N. */
-#define MPM_STAGE 1
-#endif
 #if MPM_STAGE >= 2
 #include "stage2.h"
 #endif
@@ -26,29 +24,44 @@
 #if MPM_STAGE >= 5
 #include "stage5.h"
 #endif
+#if MPM_STAGE >= 6
+#include "stage6.h"
+#endif
 
 /// [install_stages]
 void mpm_install_stages(Hooks *h)
 {
+    hooks_begin_stage(h, 1);
     stage1_install(h);
+    hooks_begin_stage(h, 2);
 #if MPM_STAGE >= 2
     stage2_install(h);
 #else
     hooks_add_refusal(h, "cracks", NULL, "stage 2 (multi-field nodes and cracks)");
 #endif
+    hooks_begin_stage(h, 3);
 #if MPM_STAGE >= 3
     stage3_install(h);
 #endif
+    hooks_begin_stage(h, 4);
 #if MPM_STAGE >= 4
     stage4_install(h);
 #else
     hooks_add_refusal(h, "contact", NULL, "stage 4 (crack contact)");
 #endif
+    hooks_begin_stage(h, 5);
 #if MPM_STAGE >= 5
     stage5_install(h);
 #else
     hooks_add_refusal(h, "run.update", "usavg", "stage 5 (USAVG)");
 #endif
+    hooks_begin_stage(h, 6);
+#if MPM_STAGE >= 6
+    stage6_install(h);
+#else
+    hooks_add_refusal(h, "run.method", "xefg", "stage 6 (the XEFG meshfree method)");
+#endif
+    hooks_begin_stage(h, 99);    /* a test's plug-in comes after every stage */
 }
 /// [install_stages]
 

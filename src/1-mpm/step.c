@@ -1,27 +1,38 @@
 /**
  * @file step.c
  * @brief One MPM time step: the paper's Tasks 0-8 in order, with the
- *        stages' hooks at the seams the paper names.
+ *        stages' subscribers at the seams the paper names.
  */
 #include <string.h>
 
 #include "step.h"
 
+/** Task 1: the stages key each pair's field, the table gives it a slot.
+ *  A scene whose stages key nothing skips it: one field at every node. */
+static int assign_fields(Sim *sim)
+{
+    if (sim->hooks.seam[SEAM_TASK1_FIELDS].n == 0)
+        return 0;
+    fields_begin_step(sim);
+    if (hooks_run_step(sim, SEAM_TASK1_FIELDS))
+        return -1;
+    return fields_resolve(sim);
+}
+
 /// [sim_step]
 int sim_step(Sim *sim)
 {
     const UpdateScheme *us = sim->scene.run.scheme;
-    Hooks *h = &sim->hooks;
     double dt = sim->dt;
 
     grid_clear(&sim->grid);                       /* Task 8 of the last step */
     locate_points(sim);                           /* Task 0 */
-    if (h->assign_fields && h->assign_fields(sim))
-        return -1;                                /* Task 1: v(p,i) */
+    if (assign_fields(sim))                       /* Task 1: v(p,i) */
+        return -1;
     extrapolate(sim, EXTRAP_MASS | (us->before > 0 ? 0u : EXTRAP_FORCE));
 
     grid_velocities(sim);                         /* Task 2 */
-    if (h->contact && h->contact(sim, 2))
+    if (grid_contact(sim, SEAM_TASK2_CONTACT))
         return -1;
     if (us->before > 0) {                         /* USF (and USAVG) */
         if (update_stress(sim, us->before * dt))
@@ -30,7 +41,7 @@ int sim_step(Sim *sim)
     }
 
     grid_momentum_update(sim);                    /* Tasks 3-4 */
-    if (h->contact && h->contact(sim, 4))
+    if (grid_contact(sim, SEAM_TASK4_CONTACT))
         return -1;
 
     if (update_points(sim))                       /* Task 5 */
@@ -42,17 +53,22 @@ int sim_step(Sim *sim)
             memset(sim->grid.py, 0, (size_t)sim->grid.nslots * sizeof(double));
             extrapolate(sim, EXTRAP_MOMENTUM);    /* eq. 31: old S, new v */
             grid_velocities(sim);
-            if (h->contact && h->contact(sim, 6))
+            if (grid_contact(sim, SEAM_TASK6_CONTACT))
                 return -1;
         }
         if (update_stress(sim, us->after * dt))   /* 6a: USL uses Task 4 */
             return -1;
     }
 
-    if (h->move_cracks && h->move_cracks(sim))
-        return -1;                                /* Task 7 */
+    if (hooks_run_step(sim, SEAM_TASK7))          /* Task 7: move cracks */
+        return -1;
     sim->t += dt;
     sim->step++;
     return 0;
 }
 /// [sim_step]
+
+int sim_advance(Sim *sim)
+{
+    return sim->scene.run.method->step(sim);
+}

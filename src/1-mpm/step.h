@@ -8,6 +8,7 @@
 
 #include "shape.h"
 #include "sim.h"
+#include "stencil.h"
 
 /** extrapolate(): masses and momenta (eq. 26). */
 #define EXTRAP_MASS 1u
@@ -29,6 +30,15 @@ void grid_velocities(Sim *sim);
  *         (eq. 29), and the velocities and accelerations Task 5 reads. */
 void grid_momentum_update(Sim *sim);
 
+/**
+ * @brief The contact contract: run the subscribers of contact seam @p seam
+ *        (Task 2, 4 or 6), which change nodal momenta only, then derive
+ *        again what later tasks read: fixed directions, v = p / m, and at
+ *        Task 4 the force f += (p - p_before) / dt and a = f / m.
+ * @return 0, or non-zero when a subscriber stopped the run.
+ */
+int grid_contact(Sim *sim, Seam seam);
+
 /** @brief Task 5: point velocities and positions (eq. 30); 0 or -1 on
  *         instability (Sim::fail filled). */
 int update_points(Sim *sim);
@@ -49,33 +59,9 @@ int update_stress(Sim *sim, double dt_star);
 void elastic_stress_increment(const Material *mat, double dexx, double deyy,
                               double dexy, double s[3]);
 
-/** @brief Record the first instability of this step in Sim::fail.
- *  @return -1, for the caller to return. */
+/** @brief Record an instability of this step in Sim::fail: of several in
+ *         one loop, the one of the lowest point index is kept, whatever
+ *         order the loop ran in. @return -1. */
 int step_fail(Sim *sim, int p, const char *quantity, double value);
-
-/// [pair_slots]
-/** @brief Field slots of the four pairs of point @p p (Task 1's v(p,i)). */
-static inline void pair_slots(const Sim *sim, int p, int slot[4])
-{
-    const Grid *g = &sim->grid;
-    int c = sim->pts.cell[p];
-    slot[0] = c;
-    slot[1] = c + 1;
-    slot[2] = c + g->nnx;
-    slot[3] = c + g->nnx + 1;
-    if (sim->hooks.pair_slots)
-        sim->hooks.pair_slots(sim, p, slot);
-}
-/// [pair_slots]
-
-/** @brief Shape values S, gradients (Gx, Gy) and field slots of the four
- *         pairs of point @p p, from its cell found in Task 0. */
-static inline void pair_shape(const Sim *sim, int p, double S[4], double Gx[4],
-                              double Gy[4], int slot[4])
-{
-    const Grid *g = &sim->grid;
-    shape_linear(sim->pts.xi[p], sim->pts.eta[p], g->idx, g->idy, S, Gx, Gy);
-    pair_slots(sim, p, slot);
-}
 
 #endif

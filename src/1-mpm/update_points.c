@@ -4,7 +4,6 @@
  */
 #include <math.h>
 
-#include "shape.h"
 #include "step.h"
 
 /// [update_points]
@@ -14,30 +13,31 @@ int update_points(Sim *sim)
     const Grid *g = &sim->grid;
     double dt = sim->dt;
     double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
+    int rc = 0;
     for (int p = 0; p < P->n; p++) {
-        double S[4], Gx[4], Gy[4];
-        int n[4];
-        pair_shape(sim, p, S, Gx, Gy, n);
+        Stencil st;
+        stencil_of_point(sim, p, &st);
         double ax = 0, ay = 0, vx = 0, vy = 0;
-        for (int a = 0; a < 4; a++) {   /* each pair reads its own field */
-            ax += S[a] * g->ax[n[a]];
-            ay += S[a] * g->ay[n[a]];
-            vx += S[a] * g->vx[n[a]];
-            vy += S[a] * g->vy[n[a]];
+        for (int a = 0; a < STENCIL_NODES; a++) {  /* each pair: its field */
+            int s = st.slot[a];
+            ax += st.S[a] * g->ax[s];
+            ay += st.S[a] * g->ay[s];
+            vx += st.S[a] * g->vx[s];
+            vy += st.S[a] * g->vy[s];
         }
         P->vx[p] += dt * ax;
         P->vy[p] += dt * ay;
         P->x[p] += dt * vx;
         P->y[p] += dt * vy;
+        /* record and go on: the loop has no early exit (threads) */
         if (!isfinite(P->vx[p]) || !isfinite(P->vy[p]))
-            return step_fail(sim, p, isfinite(P->vx[p]) ? "velocity y" : "velocity x",
-                        isfinite(P->vx[p]) ? P->vy[p] : P->vx[p]);
-        if (!(P->x[p] >= g->ox && P->x[p] < xmax))
-            return step_fail(sim, p, "position x (left the grid)", P->x[p]);
-        if (!(P->y[p] >= g->oy && P->y[p] < ymax))
-            return step_fail(sim, p, "position y (left the grid)", P->y[p]);
+            rc = step_fail(sim, p, isfinite(P->vx[p]) ? "velocity y" : "velocity x",
+                           isfinite(P->vx[p]) ? P->vy[p] : P->vx[p]);
+        else if (!(P->x[p] >= g->ox && P->x[p] < xmax))
+            rc = step_fail(sim, p, "position x (left the grid)", P->x[p]);
+        else if (!(P->y[p] >= g->oy && P->y[p] < ymax))
+            rc = step_fail(sim, p, "position y (left the grid)", P->y[p]);
     }
-    return 0;
+    return rc;
 }
 /// [update_points]
-

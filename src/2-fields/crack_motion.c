@@ -4,22 +4,18 @@
  *        centre-of-mass velocity of the nodes (eq. 7 and 32).
  */
 #include "cracks.h"
-#include "shape.h"
 #include "step.h"
 
-/** Centre-of-mass velocity of node @p n over its fields (eq. 32). */
-static void node_cm_velocity(const Sim *sim, const Cracks *C, int n,
-                             double *vx, double *vy)
+/** Centre-of-mass velocity of node @p n over all its fields (eq. 32). */
+static void node_cm_velocity(const Sim *sim, int n, double *vx, double *vy)
 {
     const Grid *g = &sim->grid;
     double m = g->m[n], px = g->px[n], py = g->py[n];
-    for (int f = 0; f < 2; f++) {
-        int s = C->node_field[2 * n + f];
-        if (s >= 0) {
-            m += g->m[s];
-            px += g->px[s];
-            py += g->py[s];
-        }
+    for (int s = field_next(&sim->fields, g, n); s >= 0;
+         s = field_next(&sim->fields, g, s)) {
+        m += g->m[s];
+        px += g->px[s];
+        py += g->py[s];
     }
     *vx = m > 0 ? px / m : 0.0;
     *vy = m > 0 ? py / m : 0.0;
@@ -34,16 +30,14 @@ int cracks_move(Sim *sim)
     for (int k = 0; k < C->ncracks; k++) {
         Crack *c = &C->crack[k];
         for (int j = 0; j < c->n; j++) {
-            double xi, eta, S[4], Gx[4], Gy[4], vx = 0, vy = 0;
-            int node[4];
-            int cell = shape_locate(g, c->x[j], c->y[j], &xi, &eta);
-            shape_linear(xi, eta, g->idx, g->idy, S, Gx, Gy);
-            shape_cell_nodes(g, cell, node);
-            for (int a = 0; a < 4; a++) {
+            Stencil st;
+            double vx = 0, vy = 0;
+            stencil_at(g, c->x[j], c->y[j], &st);
+            for (int a = 0; a < STENCIL_NODES; a++) {
                 double nvx, nvy;
-                node_cm_velocity(sim, C, node[a], &nvx, &nvy);
-                vx += S[a] * nvx;
-                vy += S[a] * nvy;
+                node_cm_velocity(sim, st.slot[a], &nvx, &nvy);
+                vx += st.S[a] * nvx;
+                vy += st.S[a] * nvy;
             }
             c->x[j] += sim->dt * vx;
             c->y[j] += sim->dt * vy;

@@ -7,25 +7,34 @@
 
 #include "cracks.h"
 
-/// [cracks_snapshot]
-void cracks_snapshot(const Sim *sim, const char *dir, int index)
+/** Close @p f; -1 when it or any write to it failed. */
+static int close_checked(FILE *f)
 {
-    const Cracks *C = cracks_of(sim);
+    int bad = ferror(f);
+    return (fclose(f) != 0 || bad) ? -1 : 0;
+}
+
+/// [cracks_snapshot]
+int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index)
+{
+    const Cracks *C = state;
     char path[1200];
+    (void)sim;
     snprintf(path, sizeof path, "%s/cracks_%05d.csv", dir, index);
     FILE *f = fopen(path, "w");
-    if (f) {
-        fprintf(f, "crack,point,x,y\n");
-        for (int k = 0; k < C->ncracks; k++)
-            for (int j = 0; j < C->crack[k].n; j++)
-                fprintf(f, "%d,%d,%.12g,%.12g\n", k, j, C->crack[k].x[j],
-                        C->crack[k].y[j]);
-        fclose(f);
-    }
+    if (!f)
+        return -1;
+    fprintf(f, "crack,point,x,y\n");
+    for (int k = 0; k < C->ncracks; k++)
+        for (int j = 0; j < C->crack[k].n; j++)
+            fprintf(f, "%d,%d,%.12g,%.12g\n", k, j, C->crack[k].x[j],
+                    C->crack[k].y[j]);
+    if (close_checked(f))
+        return -1;
     snprintf(path, sizeof path, "%s/cracks_%05d.vtp", dir, index);
     f = fopen(path, "w");
     if (!f)
-        return;
+        return -1;
     int npts = 0;
     for (int k = 0; k < C->ncracks; k++)
         npts += C->crack[k].n;
@@ -46,14 +55,14 @@ void cracks_snapshot(const Sim *sim, const char *dir, int index)
         fprintf(f, "%d\n", off);
     }
     fprintf(f, "</DataArray>\n</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n");
-    fclose(f);
+    return close_checked(f);
 }
 /// [cracks_snapshot]
 
-void cracks_history(const Sim *sim, char *buf, size_t len, int header)
+int cracks_history(const Sim *sim, void *state, FILE *f, int header)
 {
+    (void)state;
     if (header)
-        snprintf(buf, len, ",multi_field_nodes");
-    else
-        snprintf(buf, len, ",%d", cracks_multi_field_nodes(sim));
+        return fprintf(f, ",multi_field_nodes") < 0 ? -1 : 0;
+    return fprintf(f, ",%d", cracks_multi_field_nodes(sim)) < 0 ? -1 : 0;
 }

@@ -36,11 +36,11 @@ static int segments_meet(const double *a, const double *b, const double *c,
 }
 
 /** Read one crack's points and check them. */
-static int read_crack(SceneReader *r, const Scene *sc, const config_setting_t *g,
-                      Crack *c)
+static int read_crack(SceneReader *r, const Hooks *h, const Scene *sc,
+                      const config_setting_t *g, Crack *c)
 {
     static const char *const keys[] = {"points", NULL};
-    if (scene_check_keys(r, g, keys))
+    if (scene_check_open_keys(r, h, "cracks", g, keys, NULL))
         return -1;
     const config_setting_t *l = config_setting_get_member(g, "points");
     if (!l)
@@ -101,62 +101,73 @@ static int read_crack(SceneReader *r, const Scene *sc, const config_setting_t *g
     return 0;
 }
 
-/// [cracks_read]
-int cracks_read(Sim *sim, const config_setting_t *s, char *err, size_t errlen)
+/** Stage 2's state, made by whichever of its keys comes first. */
+static Cracks *cracks_make(Sim *sim)
 {
-    SceneReader r = {sim->scene.file, err, errlen};
+    Cracks *C = cracks_of(sim);
+    if (C)
+        return C;
+    C = calloc(1, sizeof *C);
+    if (C && sim_attach(sim, "cracks", C, cracks_release)) {
+        free(C);
+        C = NULL;
+    }
+    return C;
+}
+
+int cracks_read_search(Sim *sim, const config_setting_t *s, int index,
+                       SceneReader *r)
+{
+    const char *name = config_setting_get_string(s);
+    Cracks *C = cracks_make(sim);
+    (void)index;
+    if (!name)
+        return scene_error(r, s, "crack_search", "expected a string in quotes");
+    if (!C)
+        return scene_error(r, s, "crack_search", "out of memory");
+    return scene_choice(r, &sim->hooks, config_setting_parent(s), "run",
+                        "crack_search", name, (const void **)&C->search);
+}
+
+/// [cracks_read]
+int cracks_read(Sim *sim, const config_setting_t *s, int index, SceneReader *r)
+{
     int n = config_setting_length(s);
+    (void)index;
     if (config_setting_type(s) != CONFIG_TYPE_LIST)
-        return scene_error(&r, s, "cracks", "expected a list ( { points = ...; }, ... )");
+        return scene_error(r, s, "cracks", "expected a list ( { points = ...; }, ... )");
     if (n == 0)
         return 0;                        /* no crack: stage 1's behaviour */
-    Cracks *C = calloc(1, sizeof *C);
-    if (!C)
-        return scene_error(&r, s, "cracks", "out of memory");
-    sim->ext[CRACKS_EXT] = C;
-    sim->hooks.release = cracks_release;
-    C->crack = calloc((size_t)n, sizeof(Crack));
-    if (!C->crack)
-        return scene_error(&r, s, "cracks", "out of memory");
+    Cracks *C = cracks_make(sim);
+    if (!C || !(C->crack = calloc((size_t)n, sizeof(Crack))))
+        return scene_error(r, s, "cracks", "out of memory");
     for (int k = 0; k < n; k++) {
         const config_setting_t *g = config_setting_get_elem(s, (unsigned)k);
         if (config_setting_type(g) != CONFIG_TYPE_GROUP)
-            return scene_error(&r, g, "cracks", "entry %d: expected a group", k);
+            return scene_error(r, g, "cracks", "entry %d: expected a group", k);
         C->ncracks = k + 1;
-        if (read_crack(&r, &sim->scene, g, &C->crack[k]))
+        if (read_crack(r, &sim->hooks, &sim->scene, g, &C->crack[k]) ||
+            scene_read_open_keys(sim, r, "cracks", g, k))
             return -1;
     }
-    /* the hooks exist only for a scene with cracks (Task 1, 7, output) */
-    sim->hooks.extra_slots = cracks_extra_slots;
-    sim->hooks.prepare = cracks_prepare;
-    sim->hooks.assign_fields = cracks_assign_fields;
-    sim->hooks.pair_slots = cracks_pair_slots;
-    sim->hooks.move_cracks = cracks_move;
-    sim->hooks.snapshot = cracks_snapshot;
-    sim->hooks.history_columns = cracks_history;
+    if (!C->search)                      /* the latest stage's search */
+        C->search = hooks_find_choice(&sim->hooks, "run.crack_search", NULL);
+    C->side_shift = hooks_find_field_key(&sim->hooks, "crack side")->shift;
+    /* subscribed only for a scene with cracks (Task 1, 7, output) */
+    Hooks *h = &sim->hooks;
+    if (hooks_on_prepare(h, cracks_prepare, C) ||
+        hooks_on_step(h, SEAM_TASK1_FIELDS, cracks_key_fields, C) ||
+        hooks_on_step(h, SEAM_TASK7, cracks_task7, C) ||
+        hooks_on_snapshot(h, cracks_snapshot, C) ||
+        hooks_on_history(h, cracks_history, C))
+        return scene_error(r, s, "cracks", "too many subscribers at a seam");
     return 0;
 }
 /// [cracks_read]
 
-int cracks_extra_slots(const Sim *sim)
+int cracks_prepare(Sim *sim, void *state, char *err, size_t errlen)
 {
-    const Cracks *C = cracks_of(sim);
-    const Scene *sc = &sim->scene;
-    double cells = 0;
-    for (int k = 0; k < C->ncracks; k++)
-        for (int j = 0; j + 1 < C->crack[k].n; j++)
-            cells += fabs(C->crack[k].x[j + 1] - C->crack[k].x[j]) / sc->dx +
-                     fabs(C->crack[k].y[j + 1] - C->crack[k].y[j]) / sc->dy + 2;
-    /* each cell a crack passes through touches 4 nodes, each with at most
-       two extra fields; twice that leaves room for stretching cracks */
-    double slots = 2.0 * 4.0 * 2.0 * (cells + 4);
-    double all = 2.0 * (sc->ncx + 1.0) * (sc->ncy + 1.0);
-    return (int)(slots < all ? slots : all);
-}
-
-int cracks_prepare(Sim *sim, char *err, size_t errlen)
-{
-    Cracks *C = cracks_of(sim);
+    Cracks *C = state;
     const Scene *sc = &sim->scene;
     /* an edge crack may start outside the body, but some point of every
        crack must lie in a body */
@@ -172,32 +183,21 @@ int cracks_prepare(Sim *sim, char *err, size_t errlen)
             return -1;
         }
     }
-    int nn = sim->grid.nnodes;
-    C->pair = calloc((size_t)sim->pts.n + 1, 1);
-    C->node_field = malloc(sizeof(int) * 2 * (size_t)nn);
-    C->touched = malloc(sizeof(int) * ((size_t)sim->grid.capacity - (size_t)nn + 1));
-    if (!C->pair || !C->node_field || !C->touched) {
-        snprintf(err, errlen, "%s: out of memory for crack fields", sc->file);
+    if (C->search->update && C->search->update(C)) {
+        snprintf(err, errlen, "%s: cracks: out of memory for the crossing "
+                 "search \"%s\"", sc->file, C->search->name);
         return -1;
     }
-    for (int k = 0; k < 2 * nn; k++)
-        C->node_field[k] = -1;
     return 0;
 }
 
-void cracks_release(Sim *sim)
+void cracks_release(void *state)
 {
-    Cracks *C = cracks_of(sim);
-    if (!C)
-        return;
+    Cracks *C = state;
     for (int k = 0; k < C->ncracks; k++) {
         free(C->crack[k].x);
         free(C->crack[k].y);
     }
     free(C->crack);
-    free(C->pair);
-    free(C->node_field);
-    free(C->touched);
     free(C);
-    sim->ext[CRACKS_EXT] = NULL;
 }

@@ -9,9 +9,6 @@
 
 #include "sim.h"
 
-/** Index of stage 2's state in Sim::ext. */
-#define CRACKS_EXT 2
-
 /** One crack: a polyline whose end points are massless material points. */
 typedef struct Crack {
     int n;          /**< number of points (segments + 1) */
@@ -24,66 +21,137 @@ typedef struct Crack {
     int line;       /**< scene-file line, for messages */
 } Crack;
 
+/** One crossing of a particle-node line with a crack segment. */
+typedef struct CrackHit {
+    int crack;      /**< which crack */
+    int segment;    /**< which segment of it (points segment, segment + 1) */
+    int side;       /**< +1: the particle is above it, -1: below */
+} CrackHit;
+
+/** Most crossings one particle-node line may have (more stops the run). */
+#define CROSSINGS_MAX 64
+
+/** The crossings of one line, in the order a search found them. */
+typedef struct Crossings {
+    int n;                        /**< how many */
+    int lost;                     /**< crossings beyond CROSSINGS_MAX */
+    CrackHit hit[CROSSINGS_MAX];  /**< the crossings */
+} Crossings;
+
+struct Cracks;
+
+/// [crossing_search]
+/** A row of the crossing-search table (run.crack_search): which segments
+ *  Task 1 tests for a particle-node line. Every row must give the same
+ *  fields; crossings_result() does not depend on the order of visits. */
+typedef struct CrossingSearch {
+    const char *name;    /**< value of run.crack_search */
+    /** Test the segments the line from (px, py) to (nx, ny) may cross with
+     *  crossings_test(), in any order. */
+    void (*visit)(const struct Cracks *C, double px, double py, double nx,
+                  double ny, Crossings *x);
+    /** Bring the search's own data up to date with the cracks (after they
+     *  move, Task 7, and before the first step); NULL when it has none.
+     *  @return 0, or -1 to stop the run. */
+    int (*update)(struct Cracks *C);
+} CrossingSearch;
+/// [crossing_search]
+
 /// [cracks_state]
-/** Stage 2's state: the cracks and this step's field assignment. */
+/** Stage 2's state: the cracks and how Task 1 searches them. */
 typedef struct Cracks {
-    int ncracks;         /**< number of cracks */
-    Crack *crack;        /**< the cracks */
-    unsigned char *pair; /**< per point: 2 bits per corner a, the field v(p,i) */
-    int *node_field;     /**< per node: slot of field 1 and of field 2, or -1 */
-    int *touched;        /**< nodes given extra fields this step */
-    int ntouched;        /**< how many */
+    int ncracks;                  /**< number of cracks */
+    Crack *crack;                 /**< the cracks */
+    int side_shift;               /**< where the side sits in the field key */
+    int normals;                  /**< Task 1 adds crack normals per pair */
+    const CrossingSearch *search; /**< the scene's crossing search */
+    void *search_state;           /**< the search's own data */
 } Cracks;
 /// [cracks_state]
 
 /** @brief Stage 2's state of @p sim (NULL when the scene has no crack). */
 static inline Cracks *cracks_of(const Sim *sim)
 {
-    return (Cracks *)sim->ext[CRACKS_EXT];
+    return (Cracks *)sim_state(sim, "cracks");
 }
 
 /**
- * @brief Which field the pair (point, node) belongs to: 0 when the segment
- *        from the point to the node crosses no crack, 1 when it crosses a
- *        crack with the point above it, 2 below (eq. 2, Appendix "Line
- *        Crossing Algorithm", subtasks 2-4).
+ * @brief The crossing test of one segment: does the line from the
+ *        particle (px, py) to the node (nx, ny) cross segment @p k of
+ *        crack @p c (points k, k + 1)? +1 with the particle above the
+ *        segment, -1 below, 0 not crossed (Appendix, eq. 33, subtask 3).
  */
-int crack_field(const Cracks *C, double px, double py, double nx, double ny);
+int crack_segment_side(const Crack *c, int k, double px, double py, double nx,
+                       double ny);
 
 /**
  * @brief The crossing test against one crack: +1 above, -1 below, 0 not
- *        crossed (an even number of crossings counts as none).
+ *        crossed. An even number of crossings counts as none (subtask 4);
+ *        an odd number gives the sign of the sum of their sides, whatever
+ *        order the segments are tested in.
  */
 int crack_crossing(const Crack *c, double px, double py, double nx, double ny);
 
-/** @brief Parse the "cracks" section and install stage 2's hooks. */
-int cracks_read(Sim *sim, const config_setting_t *s, char *err, size_t errlen);
+/** @brief Test segment @p k of crack @p crack and record a crossing in
+ *         @p x. @return 0, or -1 when @p x is full. */
+int crossings_test(const Cracks *C, int crack, int k, double px, double py,
+                   double nx, double ny, Crossings *x);
 
-/** @brief Task 1: v(p,i) of every pair and the extra slots it needs. */
-int cracks_assign_fields(Sim *sim);
+/**
+ * @brief The field of a line from its crossings, independent of their
+ *        order: the crack of lowest index crossed an odd number of times
+ *        decides; its side is the sign of the sum of the sides of its
+ *        crossings, and the segment reported is the lowest-numbered one
+ *        crossed with that side.
+ * @return 0 (no crack crossed), 1 above, 2 below; @p hit filled when not 0.
+ */
+int crossings_result(const Crossings *x, CrackHit *hit);
 
-/** @brief Map the pairs of point @p p to their field slots. */
-void cracks_pair_slots(const Sim *sim, int p, int slot[4]);
+/**
+ * @brief Which field the pair (point, node) belongs to (eq. 2): 0 when
+ *        the segment from the point to the node crosses no crack, 1 when
+ *        it crosses one with the point above it, 2 below; the scene's
+ *        crossing search finds the crossings. @p hit (may be NULL) gets
+ *        the crack, segment and side. -1 when a line crosses more than
+ *        CROSSINGS_MAX segments.
+ */
+int crack_field(const Cracks *C, double px, double py, double nx, double ny,
+                CrackHit *hit);
+
+/** @brief The plain search: every segment of every crack. */
+extern const CrossingSearch crossing_plain;
+
+/** @brief Parse the "cracks" section and subscribe stage 2's hooks. */
+int cracks_read(Sim *sim, const config_setting_t *s, int index,
+                struct SceneReader *r);
+
+/** @brief Parse run.crack_search, the row of the crossing-search table. */
+int cracks_read_search(Sim *sim, const config_setting_t *s, int index,
+                       struct SceneReader *r);
+
+/** @brief Task 1: key every pair that crosses a crack with its side. */
+int cracks_key_fields(Sim *sim, void *state, Seam seam);
 
 /** @brief Task 7: move the crack points with the centre-of-mass velocity. */
 int cracks_move(Sim *sim);
 
+/** @brief Task 7 as a subscriber: move the cracks, then bring the
+ *         crossing search up to date. */
+int cracks_task7(Sim *sim, void *state, Seam seam);
+
 /** @brief Nodes that carry more than one velocity field this step. */
 int cracks_multi_field_nodes(const Sim *sim);
 
-/** @brief Write crack_NNNNN.vtp and crack_NNNNN.csv with the snapshot. */
-void cracks_snapshot(const Sim *sim, const char *dir, int index);
+/** @brief Write cracks_NNNNN.vtp and cracks_NNNNN.csv with the snapshot. */
+int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index);
 
 /** @brief history.csv column: number of multi-field nodes. */
-void cracks_history(const Sim *sim, char *buf, size_t len, int header);
+int cracks_history(const Sim *sim, void *state, FILE *f, int header);
 
-/** @brief Slots to reserve for fields 1 and 2. */
-int cracks_extra_slots(const Sim *sim);
-
-/** @brief Check the cracks against the bodies and allocate the field tables. */
-int cracks_prepare(Sim *sim, char *err, size_t errlen);
+/** @brief Check the cracks against the bodies; bring the search up to date. */
+int cracks_prepare(Sim *sim, void *state, char *err, size_t errlen);
 
 /** @brief Release stage 2's state. */
-void cracks_release(Sim *sim);
+void cracks_release(void *state);
 
 #endif

@@ -1,6 +1,7 @@
 /**
  * @file stage2.c
- * @brief Stage 2 adds the "cracks" section to the scene file.
+ * @brief Stage 2 adds the "cracks" section, the crack side as a part of
+ *        the field key, and the plain crossing search.
  */
 #include "stage2.h"
 
@@ -9,6 +10,9 @@
 /// [stage2_install]
 void stage2_install(Hooks *h)
 {
-    hooks_add_section(h, "cracks", cracks_read);
+    hooks_add_key(h, "", "cracks", cracks_read);
+    hooks_add_key(h, "run", "crack_search", cracks_read_search);
+    hooks_add_field_key(h, "crack side", 2);      /* fields 1 and 2 */
+    hooks_add_choice(h, "run.crack_search", "plain", &crossing_plain);
 }
 /// [stage2_install]

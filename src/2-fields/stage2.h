@@ -7,8 +7,9 @@
 
 #include "hooks.h"
 
-/** @brief Register the "cracks" scene section; its parser installs the
- *         field and crack hooks when a scene has cracks. */
+/** @brief Register the "cracks" section, run.crack_search, the crack
+ *         side's part of the field key and the plain search; the section's
+ *         parser subscribes to the seams when a scene has cracks. */
 void stage2_install(Hooks *h);
 
 #endif

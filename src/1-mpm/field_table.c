@@ -1,0 +1,223 @@
+/**
+ * @file field_table.c
+ * @brief The field table: pair rows filled by the stages' keys in Task 1,
+ *        node slots found or created for them (eq. 2).
+ */
+#include "field_table.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "shape.h"
+#include "sim.h"
+#include "step.h"
+
+/** Grow *a (of @p size bytes per element) from @p old to @p cap elements. */
+static int grow(void **a, size_t size, int old, int cap)
+{
+    void *q = realloc(*a, (size_t)cap * size);
+    if (!q)
+        return -1;
+    memset((char *)q + (size_t)old * size, 0, (size_t)(cap - old) * size);
+    *a = q;
+    return 0;
+}
+
+/** Make room for @p rows pair rows. */
+static int reserve_rows(FieldTable *F, int rows)
+{
+    if (rows <= F->row_cap)
+        return 0;
+    int cap = F->row_cap > 0 ? F->row_cap : 64, n = STENCIL_NODES;
+    while (cap < rows)
+        cap *= 2;
+    if (grow((void **)&F->row_point, sizeof(int), F->row_cap, cap) ||
+        grow((void **)&F->row_key, n * sizeof(unsigned), F->row_cap, cap) ||
+        grow((void **)&F->row_slot, n * sizeof(int), F->row_cap, cap) ||
+        (F->nx && (grow((void **)&F->row_nx, n * sizeof(double), F->row_cap, cap) ||
+                   grow((void **)&F->row_ny, n * sizeof(double), F->row_cap, cap))))
+        return -1;
+    F->row_cap = cap;
+    return 0;
+}
+
+/** Make room for @p extra extra slots, in the grid and in the table. */
+static int reserve_slots(Grid *g, FieldTable *F, int extra)
+{
+    if (extra <= F->extra_cap)
+        return 0;
+    int cap = F->extra_cap > 0 ? F->extra_cap : 64;
+    while (cap < extra)
+        cap *= 2;
+    if (grid_reserve(g, g->nnodes + cap) ||
+        grow((void **)&F->next, sizeof(int), F->extra_cap, cap) ||
+        grow((void **)&F->key, sizeof(unsigned), F->extra_cap, cap) ||
+        (F->nx && (grow((void **)&F->nx, sizeof(double), F->extra_cap, cap) ||
+                   grow((void **)&F->ny, sizeof(double), F->extra_cap, cap))))
+        return -1;
+    F->extra_cap = cap;
+    return 0;
+}
+
+int fields_enable(Sim *sim)
+{
+    FieldTable *F = &sim->fields;
+    int nn = sim->grid.nnodes, np = sim->pts.n;
+    if (F->first)
+        return 0;
+    F->first = malloc(sizeof(int) * (size_t)nn);
+    F->touched = malloc(sizeof(int) * (size_t)nn);
+    F->row_of = malloc(sizeof(int) * ((size_t)np + 1));
+    if (!F->first || !F->touched || !F->row_of)
+        return -1;
+    for (int n = 0; n < nn; n++)
+        F->first[n] = -1;
+    for (int p = 0; p < np; p++)
+        F->row_of[p] = -1;
+    return reserve_rows(F, 64) || reserve_slots(&sim->grid, F, 64) ? -1 : 0;
+}
+
+int fields_want_normals(Sim *sim)
+{
+    FieldTable *F = &sim->fields;
+    int n = STENCIL_NODES;
+    if (F->nx)
+        return 0;
+    F->nx = calloc((size_t)F->extra_cap + 1, sizeof(double));
+    F->ny = calloc((size_t)F->extra_cap + 1, sizeof(double));
+    F->row_nx = calloc((size_t)(n * F->row_cap) + 1, sizeof(double));
+    F->row_ny = calloc((size_t)(n * F->row_cap) + 1, sizeof(double));
+    return F->nx && F->ny && F->row_nx && F->row_ny ? 0 : -1;
+}
+
+void fields_begin_step(Sim *sim)
+{
+    FieldTable *F = &sim->fields;
+    for (int r = 0; r < F->nrows; r++)
+        F->row_of[F->row_point[r]] = -1;
+    for (int k = 0; k < F->ntouched; k++)
+        F->first[F->touched[k]] = -1;
+    F->nrows = 0;
+    F->ntouched = 0;
+    sim->grid.nslots = sim->grid.nnodes;
+}
+
+/// [fields_key]
+int fields_key(Sim *sim, int p, int a, unsigned key)
+{
+    FieldTable *F = &sim->fields;
+    int r = F->row_of[p], n = STENCIL_NODES;
+    if (r < 0) {                             /* the point's first keyed pair */
+        if (reserve_rows(F, F->nrows + 1))
+            return step_fail(sim, p, "memory for the pair table", F->nrows);
+        r = F->nrows++;
+        F->row_of[p] = r;
+        F->row_point[r] = p;
+        memset(&F->row_key[n * r], 0, (size_t)n * sizeof(unsigned));
+        if (F->row_nx) {
+            memset(&F->row_nx[n * r], 0, (size_t)n * sizeof(double));
+            memset(&F->row_ny[n * r], 0, (size_t)n * sizeof(double));
+        }
+    }
+    F->row_key[n * r + a] |= key;
+    return 0;
+}
+/// [fields_key]
+
+void fields_add_normal(Sim *sim, int p, int a, double nx, double ny)
+{
+    FieldTable *F = &sim->fields;
+    int r = F->row_of[p];
+    if (!F->row_nx || r < 0)
+        return;
+    F->row_nx[STENCIL_NODES * r + a] += nx;
+    F->row_ny[STENCIL_NODES * r + a] += ny;
+}
+
+/** The slot of @p key at node @p n; created (in key order) when missing. */
+static int node_slot(Sim *sim, int n, unsigned key)
+{
+    FieldTable *F = &sim->fields;
+    Grid *g = &sim->grid;
+    int prev = -1, s = F->first[n];
+    while (s >= 0 && F->key[s - g->nnodes] < key) {
+        prev = s;
+        s = F->next[s - g->nnodes];
+    }
+    if (s >= 0 && F->key[s - g->nnodes] == key)
+        return s;
+    if (reserve_slots(g, F, g->nslots - g->nnodes + 1))
+        return -1;
+    int t = g->nslots++, e = t - g->nnodes;
+    g->slot_node[e] = n;
+    g->m[t] = g->px[t] = g->py[t] = g->fx[t] = g->fy[t] = 0.0;
+    if (g->vol)
+        g->vol[t] = 0.0;
+    F->key[e] = key;
+    F->next[e] = s;
+    if (F->nx)
+        F->nx[e] = F->ny[e] = 0.0;
+    if (F->first[n] < 0)
+        F->touched[F->ntouched++] = n;
+    if (prev < 0)
+        F->first[n] = t;
+    else
+        F->next[prev - g->nnodes] = t;
+    return t;
+}
+
+/// [fields_resolve]
+int fields_resolve(Sim *sim)
+{
+    FieldTable *F = &sim->fields;
+    Grid *g = &sim->grid;
+    int n = STENCIL_NODES;
+    for (int r = 0; r < F->nrows; r++) {
+        int p = F->row_point[r], node[STENCIL_NODES];
+        shape_cell_nodes(g, sim->pts.cell[p], node);
+        for (int a = 0; a < n; a++) {
+            unsigned key = F->row_key[n * r + a];
+            int s = key ? node_slot(sim, node[a], key) : node[a];
+            if (s < 0)
+                return step_fail(sim, p, "memory for velocity fields", node[a]);
+            F->row_slot[n * r + a] = s;
+            if (F->nx && s >= g->nnodes) {
+                F->nx[s - g->nnodes] += F->row_nx[n * r + a];
+                F->ny[s - g->nnodes] += F->row_ny[n * r + a];
+            }
+        }
+    }
+    return 0;
+}
+/// [fields_resolve]
+
+int fields_multi_field_nodes(const Sim *sim)
+{
+    const FieldTable *F = &sim->fields;
+    const Grid *g = &sim->grid;
+    int count = 0;
+    for (int k = 0; k < F->ntouched; k++) {
+        int fields = 0;
+        for (int s = F->touched[k]; s >= 0; s = field_next(F, g, s))
+            fields += g->m[s] > 0;
+        count += fields > 1;
+    }
+    return count;
+}
+
+void fields_free(FieldTable *F)
+{
+    free(F->first);
+    free(F->next);
+    free(F->key);
+    free(F->touched);
+    free(F->row_of);
+    free(F->row_point);
+    free(F->row_key);
+    free(F->row_slot);
+    free(F->row_nx);
+    free(F->row_ny);
+    free(F->nx);
+    free(F->ny);
+    memset(F, 0, sizeof *F);
+}

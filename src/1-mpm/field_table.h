@@ -1,0 +1,93 @@
+/**
+ * @file field_table.h
+ * @brief The velocity fields of the grid nodes (Task 1, eq. 2): one table
+ *        keyed by what the stages contribute.
+ *
+ * Every node owns slot n, its field with key 0. A pair (point p, node i)
+ * whose key is not 0 (a crack between them, from stage 2; a material or
+ * contact group, from stage 4) uses the node's slot of that key, created
+ * the first time a step needs it. The extra slots of a node form a short
+ * list sorted by key. A point whose four pairs all have key 0 has no row
+ * in the pair table and costs what it costs in conventional MPM; a scene
+ * whose stages key nothing has no table at all.
+ *
+ * The table grows by doubling when a step needs more room, during Task 1,
+ * before anything is extrapolated to the grid.
+ */
+#ifndef MPM_FIELD_TABLE_H
+#define MPM_FIELD_TABLE_H
+
+#include "grid.h"
+
+struct Sim;
+
+/// [field_table]
+/** Velocity fields of the nodes and the field of every pair. */
+typedef struct FieldTable {
+    int *first;        /**< per node: first extra slot, -1; NULL: no table */
+    int *next;         /**< per extra slot: next of the same node, or -1 */
+    unsigned *key;     /**< per extra slot: its key */
+    int extra_cap;     /**< room of next, key, nx, ny */
+    int *touched;      /**< nodes given extra slots this step */
+    int ntouched;      /**< how many */
+    int *row_of;       /**< per point: its pair row, or -1 */
+    int *row_point;    /**< per row: the point */
+    unsigned *row_key; /**< 4 per row: key of each pair */
+    int *row_slot;     /**< 4 per row: slot of each pair (after Task 1) */
+    double *row_nx;    /**< 4 per row: crack normal sum x (when asked) */
+    double *row_ny;    /**< 4 per row: crack normal sum y (when asked) */
+    int nrows;         /**< rows in use this step */
+    int row_cap;       /**< rows allocated */
+    double *nx;        /**< per extra slot: normal sum x (when asked) */
+    double *ny;        /**< per extra slot: normal sum y (when asked) */
+} FieldTable;
+/// [field_table]
+
+/** @brief Give the scene a field table (idempotent). @return 0 or -1. */
+int fields_enable(struct Sim *sim);
+
+/** @brief Accumulate crack normals per pair and per slot (section 2.2).
+ *  @return 0 or -1. */
+int fields_want_normals(struct Sim *sim);
+
+/** @brief Task 1 begins: forget the last step's rows and extra slots. */
+void fields_begin_step(struct Sim *sim);
+
+/**
+ * @brief Add @p key bits to the key of pair (point @p p, corner @p a).
+ * @return 0, or -1 when memory is exhausted (Sim::fail filled).
+ */
+int fields_key(struct Sim *sim, int p, int a, unsigned key);
+
+/** @brief Add a normal (@p nx, @p ny) to pair (@p p, @p a) (when asked). */
+void fields_add_normal(struct Sim *sim, int p, int a, double nx, double ny);
+
+/**
+ * @brief Task 1 ends: give every keyed pair the slot of its key at its
+ *        node, creating slots as needed (and their normals).
+ * @return 0, or -1 when memory is exhausted (Sim::fail filled).
+ */
+int fields_resolve(struct Sim *sim);
+
+/** @brief The slot after @p s at the same node, or -1. Start from s = n
+ *         (the node's field 0): for (s = n; s >= 0; s = field_next(..)). */
+static inline int field_next(const FieldTable *F, const Grid *g, int s)
+{
+    if (s < g->nnodes)
+        return F->first ? F->first[s] : -1;
+    return F->next[s - g->nnodes];
+}
+
+/** @brief Key of slot @p s (0 for a node's own slot). */
+static inline unsigned field_key(const FieldTable *F, const Grid *g, int s)
+{
+    return s < g->nnodes ? 0u : F->key[s - g->nnodes];
+}
+
+/** @brief Nodes where more than one field has mass this step. */
+int fields_multi_field_nodes(const struct Sim *sim);
+
+/** @brief Release the table. */
+void fields_free(FieldTable *F);
+
+#endif

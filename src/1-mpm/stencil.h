@@ -1,0 +1,62 @@
+/**
+ * @file stencil.h
+ * @brief The stencil of one point: the nodes its shape functions reach,
+ *        the values S_ip and gradients G_ip there, and the field slot of
+ *        each pair (Task 0 and Task 1's v(p,i)).
+ *
+ * Every loop between points and grid reads a point's stencil and nothing
+ * else of the shape functions, so a chapter that brings other shape
+ * functions (GIMP, CPDI) changes this file and shape.c only.
+ */
+#ifndef MPM_STENCIL_H
+#define MPM_STENCIL_H
+
+#include "shape.h"
+#include "sim.h"
+
+/// [stencil]
+/** One point's view of the grid. slot[a] is the a-th node's own slot (its
+ *  index, field 0) unless Task 1 gave the pair another field; the node of
+ *  any slot is grid_slot_node(). */
+typedef struct Stencil {
+    int slot[STENCIL_NODES];  /**< the nodes, as the field slot of each pair */
+    double S[STENCIL_NODES];  /**< shape function values S_ip */
+    double Gx[STENCIL_NODES]; /**< gradients dS/dx */
+    double Gy[STENCIL_NODES]; /**< gradients dS/dy */
+} Stencil;
+
+/** @brief The stencil of a position: nodes and shape functions; every
+ *         pair in field 0 (crack points, output). */
+static inline void stencil_at(const Grid *g, double x, double y, Stencil *st)
+{
+    double xi, eta;
+    int cell = shape_locate(g, x, y, &xi, &eta);
+    shape_linear(xi, eta, g->idx, g->idy, st->S, st->Gx, st->Gy);
+    shape_cell_nodes(g, cell, st->slot);
+}
+
+/** @brief The nodes of point @p p's stencil (Task 1 needs no more). */
+static inline void stencil_nodes(const Sim *sim, int p, int node[STENCIL_NODES])
+{
+    shape_cell_nodes(&sim->grid, sim->pts.cell[p], node);
+}
+
+/** @brief The stencil of point @p p from its cell found in Task 0, with
+ *         the field slots Task 1 gave its pairs. */
+static inline void stencil_of_point(const Sim *sim, int p, Stencil *st)
+{
+    const Grid *g = &sim->grid;
+    const FieldTable *F = &sim->fields;
+    shape_linear(sim->pts.xi[p], sim->pts.eta[p], g->idx, g->idy, st->S,
+                 st->Gx, st->Gy);
+    shape_cell_nodes(g, sim->pts.cell[p], st->slot);
+    if (F->row_of) {                       /* a keyed pair uses its slot */
+        int r = F->row_of[p];
+        if (r >= 0)
+            for (int a = 0; a < STENCIL_NODES; a++)
+                st->slot[a] = F->row_slot[STENCIL_NODES * r + a];
+    }
+}
+/// [stencil]
+
+#endif

@@ -1,0 +1,48 @@
+/**
+ * @file crack_fields.c
+ * @brief Task 1 with cracks: the crack side of every particle-node pair
+ *        that crosses a crack, as stage 2's part of the field key (eq. 2).
+ */
+#include <math.h>
+
+#include "cracks.h"
+#include "step.h"
+
+/// [cracks_key_fields]
+int cracks_key_fields(Sim *sim, void *state, Seam seam)
+{
+    const Cracks *C = state;
+    const Grid *g = &sim->grid;
+    const Particles *P = &sim->pts;
+    (void)seam;
+    for (int p = 0; p < P->n; p++) {
+        int node[STENCIL_NODES];
+        stencil_nodes(sim, p, node);
+        for (int a = 0; a < STENCIL_NODES; a++) {
+            CrackHit hit;
+            int f = crack_field(C, P->x[p], P->y[p], grid_node_x(g, node[a]),
+                                grid_node_y(g, node[a]), &hit);
+            if (f < 0)
+                return step_fail(sim, p, "crack crossings of one line (more "
+                                 "than CROSSINGS_MAX)", node[a]);
+            if (!f)
+                continue;                    /* field 0: nothing to key */
+            if (fields_key(sim, p, a, (unsigned)f << C->side_shift))
+                return -1;
+            if (C->normals) {                /* section 2.2: above to below */
+                const Crack *c = &C->crack[hit.crack];
+                double dx = c->x[hit.segment + 1] - c->x[hit.segment];
+                double dy = c->y[hit.segment + 1] - c->y[hit.segment];
+                double len = sqrt(dx * dx + dy * dy);
+                fields_add_normal(sim, p, a, dy / len, -dx / len);
+            }
+        }
+    }
+    return 0;
+}
+/// [cracks_key_fields]
+
+int cracks_multi_field_nodes(const Sim *sim)
+{
+    return fields_multi_field_nodes(sim);
+}

@@ -1,0 +1,90 @@
+/**
+ * @file crack_search.c
+ * @brief The crossing seam: a search visits the segments a particle-node
+ *        line may cross, in any order; the field follows from all the
+ *        crossings by a rule that does not depend on that order.
+ */
+#include "cracks.h"
+#include "step.h"
+
+int crossings_test(const Cracks *C, int crack, int k, double px, double py,
+                   double nx, double ny, Crossings *x)
+{
+    int side = crack_segment_side(&C->crack[crack], k, px, py, nx, ny);
+    if (!side)
+        return 0;
+    if (x->n == CROSSINGS_MAX) {
+        x->lost++;
+        return -1;
+    }
+    x->hit[x->n++] = (CrackHit){crack, k, side};
+    return 0;
+}
+
+/// [crossings_result]
+int crossings_result(const Crossings *x, CrackHit *hit)
+{
+    int best = -1, sum = 0;
+    for (int i = 0; i < x->n; i++) {        /* lowest crack crossed oddly */
+        int c = x->hit[i].crack, count = 0, s = 0;
+        if (best >= 0 && c >= best)
+            continue;
+        for (int j = 0; j < x->n; j++)
+            if (x->hit[j].crack == c) {
+                count++;
+                s += x->hit[j].side;
+            }
+        if (count % 2) {
+            best = c;
+            sum = s;
+        }
+    }
+    if (best < 0)
+        return 0;
+    int side = sum > 0 ? 1 : -1;
+    hit->crack = best;
+    hit->side = side;
+    hit->segment = -1;
+    for (int i = 0; i < x->n; i++)          /* lowest segment of that side */
+        if (x->hit[i].crack == best && x->hit[i].side == side &&
+            (hit->segment < 0 || x->hit[i].segment < hit->segment))
+            hit->segment = x->hit[i].segment;
+    return side > 0 ? 1 : 2;
+}
+/// [crossings_result]
+
+int crack_field(const Cracks *C, double px, double py, double nx, double ny,
+                CrackHit *hit)
+{
+    Crossings x;
+    CrackHit h;
+    x.n = x.lost = 0;
+    C->search->visit(C, px, py, nx, ny, &x);
+    if (x.lost)
+        return -1;
+    return crossings_result(&x, hit ? hit : &h);
+}
+
+/// [crossing_plain]
+/** Every segment of every crack, in order. */
+static void plain_visit(const Cracks *C, double px, double py, double nx,
+                        double ny, Crossings *x)
+{
+    for (int c = 0; c < C->ncracks; c++)
+        for (int k = 0; k + 1 < C->crack[c].n; k++)
+            crossings_test(C, c, k, px, py, nx, ny, x);
+}
+
+const CrossingSearch crossing_plain = {"plain", plain_visit, NULL};
+/// [crossing_plain]
+
+int cracks_task7(Sim *sim, void *state, Seam seam)
+{
+    Cracks *C = state;
+    (void)seam;
+    if (cracks_move(sim))
+        return -1;
+    if (C->search->update && C->search->update(C))
+        return step_fail(sim, -1, "memory for the crossing search", 0);
+    return 0;
+}
