@@ -97,7 +97,8 @@ EXERCISE_CHECKS := $(foreach e,$(EXERCISES),$(call ex_tests,$(e),reference) !$(c
 define EXERCISE_RULES
 build/exercises/$(1)/$(2)/solution.o: $(3) $(4)
 	@mkdir -p $$(@D)
-	$$(CC) $$(CFLAGS_release) $$(INC_release_$(call ex_stage,$(1))) -c $$< -o $$@
+	$$(CC) $$(CFLAGS_release) $$(INC_release_$(call ex_stage,$(1))) -MMD -MP -c $$< -o $$@
+-include build/exercises/$(1)/$(2)/solution.d
 build/exercises/$(1)/$(2)/%: build/stage$(call ex_stage,$(1))/tests/$(firstword $(subst /, ,$(1)))/%.o \
         build/exercises/$(1)/$(2)/solution.o $$(SUPPORT_release_$(call ex_stage,$(1))) \
         build/stage$(call ex_stage,$(1))/libmpm.a

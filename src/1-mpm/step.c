@@ -7,9 +7,7 @@
 
 #include "step.h"
 
-/** Task 1: the stages key each pair's field, the table gives it a slot.
- *  A scene whose stages key nothing skips it: one field at every node. */
-static int assign_fields(Sim *sim)
+int assign_fields(Sim *sim)
 {
     if (sim->hooks.seam[SEAM_TASK1_FIELDS].n == 0)
         return 0;

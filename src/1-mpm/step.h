@@ -20,6 +20,11 @@
 /** @brief Task 0: each point's cell and local coordinates for this step. */
 void locate_points(Sim *sim);
 
+/** @brief Task 1: the stages key each pair's field (SEAM_TASK1_FIELDS),
+ *         the field table gives it a slot. A scene whose stages key
+ *         nothing skips it: one field at every node. @return 0 or -1. */
+int assign_fields(Sim *sim);
+
 /** @brief Tasks 1 and 3: scatter point data to the grid slots of each pair. */
 void extrapolate(Sim *sim, unsigned what);
 

@@ -11,8 +11,11 @@ int crossings_test(const Cracks *C, int crack, int k, double px, double py,
                    double nx, double ny, Crossings *x)
 {
     int side = crack_segment_side(&C->crack[crack], k, px, py, nx, ny);
-    if (!side)
-        return 0;
+    return side ? crossings_add(x, crack, k, side) : 0;
+}
+
+int crossings_add(Crossings *x, int crack, int k, int side)
+{
     if (x->n == CROSSINGS_MAX) {
         x->lost++;
         return -1;
@@ -71,8 +74,11 @@ static void plain_visit(const Cracks *C, double px, double py, double nx,
                         double ny, Crossings *x)
 {
     for (int c = 0; c < C->ncracks; c++)
-        for (int k = 0; k + 1 < C->crack[c].n; k++)
-            crossings_test(C, c, k, px, py, nx, ny, x);
+        for (int k = 0; k + 1 < C->crack[c].n; k++) {
+            int side = crack_segment_side(&C->crack[c], k, px, py, nx, ny);
+            if (side)
+                crossings_add(x, c, k, side);
+        }
 }
 
 const CrossingSearch crossing_plain = {"plain", plain_visit, NULL};

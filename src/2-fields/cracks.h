@@ -97,6 +97,10 @@ int crack_crossing(const Crack *c, double px, double py, double nx, double ny);
 int crossings_test(const Cracks *C, int crack, int k, double px, double py,
                    double nx, double ny, Crossings *x);
 
+/** @brief Record a crossing of segment @p k of crack @p crack with @p side
+ *         (+1 or -1) in @p x. @return 0, or -1 when @p x is full. */
+int crossings_add(Crossings *x, int crack, int k, int side);
+
 /**
  * @brief The field of a line from its crossings, independent of their
  *        order: the crack of lowest index crossed an odd number of times

@@ -20,11 +20,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "stages.h"
 #include "testkit.h"
 
-#ifndef MPM_STAGE
-#define MPM_STAGE 1
-#endif
 
 #define OUT_DIR "build/test-bad-input-out"  /* written only if a scene is wrongly accepted */
 
@@ -95,7 +93,7 @@ static void check_message(const char *who, const BadCase *c, const char *msg)
         fail_msg("%s %s: message lacks \"%s\": %s", who, c->path, c->expect, msg);
 }
 
-/** The bad/ folders of chapters 1..MPM_STAGE, "tests/N-name/bad". */
+/** The bad/ folders of chapters 1..mpm_stage(), "tests/N-name/bad". */
 static int bad_dirs(char dirs[][256], int max)
 {
     DIR *d = opendir("tests");
@@ -105,7 +103,7 @@ static int bad_dirs(char dirs[][256], int max)
     while ((e = readdir(d)) != NULL) {
         int stage = atoi(e->d_name);
         char path[512];
-        if (stage < 1 || stage > MPM_STAGE || !strchr(e->d_name, '-'))
+        if (stage < 1 || stage > mpm_stage() || !strchr(e->d_name, '-'))
             continue;
         snprintf(path, sizeof path, "tests/%.200s/bad", e->d_name);
         DIR *b = opendir(path);
@@ -135,7 +133,7 @@ static void every_bad_scene_is_refused(void **state)
     for (int k = 0; k < n; k++) {
         BadCase c;
         read_case(where[k], names[k], &c);
-        if (c.before_stage && MPM_STAGE >= c.before_stage)
+        if (c.before_stage && mpm_stage() >= c.before_stage)
             continue;                         /* this build has the feature */
         char args[1024], out[4096], err[1024];
         snprintf(args, sizeof args, "%s -q -o %s", c.path, OUT_DIR);
@@ -151,7 +149,7 @@ static void every_bad_scene_is_refused(void **state)
         check_message("library", &c, err);
         checked++;
     }
-    printf("  %d of %d bad scenes checked in a stage-%d build\n", checked, n, MPM_STAGE);
+    printf("  %d of %d bad scenes checked in a stage-%d build\n", checked, n, mpm_stage());
     assert_true(checked >= n - 3);            /* 3 are refused by early stages only */
 }
 

@@ -37,6 +37,7 @@
 #include <string.h>
 
 #include "shape.h"
+#include "stencil.h"
 #include "testkit.h"
 
 static const char *const SCENE = "tests/1-mpm/scenes/disks.cfg";
@@ -48,14 +49,11 @@ static int shared_nodes(const Sim *sim, unsigned char *mark)
     const Grid *g = &sim->grid;
     memset(mark, 0, (size_t)g->nnodes);
     for (int p = 0; p < P->n; p++) {
-        double xi, eta, S[4], Gx[4], Gy[4];
-        int node[4];
-        int c = shape_locate(g, P->x[p], P->y[p], &xi, &eta);
-        shape_linear(xi, eta, g->idx, g->idy, S, Gx, Gy);
-        shape_cell_nodes(g, c, node);
-        for (int a = 0; a < 4; a++)
-            if (S[a] > 0)
-                mark[node[a]] |= (unsigned char)(1u << P->body[p]);
+        Stencil st;
+        stencil_at(g, P->x[p], P->y[p], &st);
+        for (int a = 0; a < STENCIL_NODES; a++)
+            if (st.S[a] > 0)
+                mark[st.slot[a]] |= (unsigned char)(1u << P->body[p]);
     }
     int n = 0;
     for (int k = 0; k < g->nnodes; k++)

@@ -68,7 +68,7 @@ static void locate_on_grid_lines(void **state)
 {
     (void)state;
     Grid g;
-    assert_int_equal(grid_init(&g, -1.0, 2.0, 0.5, 0.25, 4, 8, 0), 0);
+    assert_int_equal(grid_init(&g, -1.0, 2.0, 0.5, 0.25, 4, 8), 0);
     double xi, eta;
     /* a point on an interior grid line belongs to the cell on its right/top */
     int c = shape_locate(&g, -0.5, 2.5, &xi, &eta);

@@ -54,10 +54,10 @@ static void crack_moves_with_centre_of_mass(void **state)
     }
     grid_clear(&sim->grid);
     locate_points(sim);
-    assert_int_equal(sim->hooks.assign_fields(sim), 0);
+    assert_int_equal(assign_fields(sim), 0);
     extrapolate(sim, EXTRAP_MASS);
     sim->dt = 0.01;
-    assert_int_equal(sim->hooks.move_cracks(sim), 0);
+    assert_int_equal(cracks_move(sim), 0);
     const Crack *c = &cracks_of(sim)->crack[0];
     assert_close(c->y[0], 5.0 + 0.5 * 0.01, 1e-15);   /* start point, a node */
     assert_close(c->y[2], 5.0 + 0.5 * 0.01, 1e-15);   /* end point, a node */

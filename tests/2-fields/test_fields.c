@@ -74,10 +74,15 @@ static const char *scene =
     "             rectangle = { min = [2.0, 2.0]; max = [8.0, 8.0]; }; } );\n"
     "cracks = ( { points = ( [1.5, 5.0], [5.0, 5.0] ); } );\n";
 
-/** Field of pair (p, corner a) after Task 1. */
+/** Field of pair (p, corner a) after Task 1: the crack side's part of
+ *  the pair's key in the field table. */
 static int field_of(const Sim *sim, int p, int a)
 {
-    return (cracks_of(sim)->pair[p] >> (2 * a)) & 3;
+    const FieldTable *F = &sim->fields;
+    int r = F->row_of[p];
+    if (r < 0)
+        return 0;
+    return (int)(F->row_key[STENCIL_NODES * r + a] >> cracks_of(sim)->side_shift) & 3;
 }
 
 static void fields_at_nodes(void **state)
@@ -87,12 +92,12 @@ static void fields_at_nodes(void **state)
     const Grid *g = &sim->grid;
     const Particles *P = &sim->pts;
     locate_points(sim);
-    assert_int_equal(sim->hooks.assign_fields(sim), 0);
+    assert_int_equal(assign_fields(sim), 0);
     /* per node: which fields its pairs use */
     int *seen = calloc((size_t)g->nnodes, sizeof(int));
     for (int p = 0; p < P->n; p++) {
         int node[4];
-        shape_cell_nodes(g, P->cell[p], node);
+        stencil_nodes(sim, p, node);
         for (int a = 0; a < 4; a++) {
             int f = field_of(sim, p, a);
             seen[node[a]] |= 1 << f;

@@ -1,17 +1,20 @@
 /*
- * Exercise "line crossing" (chapter 2): which velocity field does the pair
- * (particle, node) use?  Copy this file, fill in the two functions, and run
+ * Exercise "line crossing" (chapter 2): which side of a crack is a
+ * particle on, seen from a node?  Copy this file, fill in the two
+ * functions, and run
  *     make exercise EX=2-fields/line-crossing SOLUTION=your_copy.c
  * The contract is in src/2-fields/cracks.h; README.md says what is checked.
  */
 #include "cracks.h"
 
-int crack_crossing(const Crack *c, double px, double py, double nx, double ny)
+int crack_segment_side(const Crack *c, int k, double px, double py, double nx,
+                       double ny)
 {
-    /* TODO: signed areas A(123), A(124), A(341), A(342) for each segment
-     * 3 -> 4 of the crack (eq. 33), the sign patterns of subtask 3, and an
-     * odd number of crossings (subtask 4).  +1 above, -1 below, 0 none. */
+    /* TODO: signed areas A(123), A(124), A(341), A(342) with 1 = particle,
+     * 2 = node, 3 -> 4 = segment k of the crack (eq. 33), and the sign
+     * patterns of subtask 3.  +1 above, -1 below, 0 not crossed. */
     (void)c;
+    (void)k;
     (void)px;
     (void)py;
     (void)nx;
@@ -19,11 +22,11 @@ int crack_crossing(const Crack *c, double px, double py, double nx, double ny)
     return 0;
 }
 
-int crack_field(const Cracks *C, double px, double py, double nx, double ny)
+int crack_crossing(const Crack *c, double px, double py, double nx, double ny)
 {
-    /* TODO: 0 when no crack is crossed, 1 above the first crack crossed,
-     * 2 below it (eq. 2). */
-    (void)C;
+    /* TODO: over all segments of the crack: an odd number of crossings
+     * crosses (subtask 4), with the sign of the sum of their sides. */
+    (void)c;
     (void)px;
     (void)py;
     (void)nx;
