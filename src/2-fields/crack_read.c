@@ -194,6 +194,8 @@ int cracks_prepare(Sim *sim, void *state, char *err, size_t errlen)
 void cracks_release(void *state)
 {
     Cracks *C = state;
+    if (C->search && C->search->release)
+        C->search->release(C);
     for (int k = 0; k < C->ncracks; k++) {
         free(C->crack[k].x);
         free(C->crack[k].y);

@@ -81,7 +81,7 @@ static void plain_visit(const Cracks *C, double px, double py, double nx,
         }
 }
 
-const CrossingSearch crossing_plain = {"plain", plain_visit, NULL};
+const CrossingSearch crossing_plain = {"plain", plain_visit, NULL, NULL};
 /// [crossing_plain]
 
 int cracks_task7(Sim *sim, void *state, Seam seam)

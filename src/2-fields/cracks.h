@@ -54,6 +54,8 @@ typedef struct CrossingSearch {
      *  move, Task 7, and before the first step); NULL when it has none.
      *  @return 0, or -1 to stop the run. */
     int (*update)(struct Cracks *C);
+    /** Free the search's own data (Cracks::search_state); NULL when none. */
+    void (*release)(struct Cracks *C);
 } CrossingSearch;
 /// [crossing_search]
 

@@ -71,7 +71,7 @@ int tk_run_mpm(const char *args, char *out, size_t outlen)
 void tk_steps(Sim *sim, long n)
 {
     for (long k = 0; k < n; k++)
-        if (sim_step(sim))
+        if (sim_advance(sim))
             fail_msg("unstable at step %ld: particle %d %s = %g", sim->fail.step,
                      sim->fail.particle, sim->fail.quantity, sim->fail.value);
 }
