@@ -15,7 +15,6 @@
 #include <float.h>
 #include <stdlib.h>
 
-#include "stages.h"
 #include "step.h"
 
 static const double DVX = 0.125, DVY = -0.0625;
@@ -44,17 +43,18 @@ static const char *scene =
     "loads = ( { rectangle = { min = [6.0, 1.0]; max = [7.0, 5.0]; };\n"
     "            force = [1.0e-4, 2.0e-4]; } );\n";
 
+/** The kick as a plug-in: subscribed at Task 4 with its call counter. */
+static void with_kick(Hooks *h, void *calls)
+{
+    assert_int_equal(hooks_on_step(h, SEAM_TASK4_CONTACT, kick, calls), 0);
+}
+
 /** Load the scene, with the kick subscribed when @p calls is not NULL. */
 static Sim *load(int *calls)
 {
-    Sim *sim = malloc(sizeof *sim);
-    assert_non_null(sim);
-    sim_init(sim);
-    mpm_install_stages(&sim->hooks);
-    if (calls)
-        assert_int_equal(hooks_on_step(&sim->hooks, SEAM_TASK4_CONTACT, kick, calls), 0);
     char err[1024];
-    if (sim_load_string(sim, scene, "scene", err, sizeof err))
+    Sim *sim = tk_load_with(scene, calls ? with_kick : NULL, calls, err, sizeof err);
+    if (!sim)
         fail_msg("refused: %s", err);
     return sim;
 }

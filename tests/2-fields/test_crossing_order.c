@@ -15,7 +15,6 @@
 #include <string.h>
 
 #include "cracks.h"
-#include "stages.h"
 #include "step.h"
 
 /** A small deterministic generator (xorshift64*), state owned by a test. */
@@ -150,18 +149,20 @@ static const char *scene =
     "                        [8.0, 6.0], [9.5, 6.0] ); },\n"
     "           { points = ( [11.0, 3.0], [12.0, 5.0], [11.5, 7.5] ); } );\n";
 
+/** The shuffled search as a plug-in: one more row of the table. */
+static void with_shuffled(Hooks *h, void *arg)
+{
+    (void)arg;
+    hooks_add_choice(h, "run.crack_search", "shuffled", &shuffled);
+}
+
 /** The scene with search @p name, the shuffled search registered too. */
 static Sim *load(const char *name)
 {
-    char text[2048];
+    char text[2048], err[1024];
     snprintf(text, sizeof text, scene, name);
-    Sim *sim = malloc(sizeof *sim);
-    assert_non_null(sim);
-    sim_init(sim);
-    mpm_install_stages(&sim->hooks);
-    hooks_add_choice(&sim->hooks, "run.crack_search", "shuffled", &shuffled);
-    char err[1024];
-    if (sim_load_string(sim, text, "scene", err, sizeof err))
+    Sim *sim = tk_load_with(text, with_shuffled, NULL, err, sizeof err);
+    if (!sim)
         fail_msg("refused: %s", err);
     return sim;
 }

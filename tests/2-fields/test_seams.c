@@ -14,7 +14,6 @@
 
 #include "cracks.h"
 #include "scene_read.h"
-#include "stages.h"
 #include "step.h"
 
 /** The plug-in's state: the group of each material and its key part. */
@@ -75,19 +74,27 @@ static const char *scene =
     "           { material = \"b\"; rectangle = { min = [5.0, 2.0]; max = [8.0, 8.0]; }; } );\n"
     "cracks = ( { points = ( [1.5, 5.0], [5.0, 5.0] ); } );\n";
 
-/** Load @p text with this build's stages and, if @p plugin, the plug-in. */
-static Sim *load(const char *text, int plugin, char *err, size_t errlen)
+/** Plug-in with a refusal only: a build that knows who adds the key. */
+static void refuse_group(Hooks *h, void *arg)
 {
-    Sim *sim = malloc(sizeof *sim);
-    assert_non_null(sim);
-    sim_init(sim);
-    mpm_install_stages(&sim->hooks);
-    if (plugin)
-        plugin_install(&sim->hooks);
-    if (sim_load_string(sim, text, "scene", err, errlen)) {
-        tk_free(sim);
-        return NULL;
-    }
+    (void)arg;
+    hooks_add_refusal(h, "materials.group", NULL, "the test plug-in");
+}
+
+/** The plug-in as tk_load_with() takes it. */
+static void with_plugin(Hooks *h, void *arg)
+{
+    (void)arg;
+    plugin_install(h);
+}
+
+/** Load the scene with the plug-in; fail the test if refused. */
+static Sim *load(void)
+{
+    char err[1024];
+    Sim *sim = tk_load_with(scene, with_plugin, NULL, err, sizeof err);
+    if (!sim)
+        fail_msg("refused: %s", err);
     return sim;
 }
 
@@ -95,26 +102,17 @@ static void nested_key_needs_its_plugin(void **state)
 {
     (void)state;
     char err[1024];
-    assert_null(load(scene, 0, err, sizeof err));
+    assert_null(tk_load_with(scene, NULL, NULL, err, sizeof err));
     assert_non_null(strstr(err, "scene:3: group: unknown key"));
     /* a build that knows who adds the key says so */
-    Sim *sim = malloc(sizeof *sim);
-    assert_non_null(sim);
-    sim_init(sim);
-    mpm_install_stages(&sim->hooks);
-    hooks_add_refusal(&sim->hooks, "materials.group", NULL, "the test plug-in");
-    assert_int_not_equal(sim_load_string(sim, scene, "scene", err, sizeof err), 0);
+    assert_null(tk_load_with(scene, refuse_group, NULL, err, sizeof err));
     assert_non_null(strstr(err, "scene:3: group: this key needs the test plug-in"));
-    tk_free(sim);
 }
 
 static void subscribers_run_in_stage_order(void **state)
 {
     (void)state;
-    char err[1024];
-    Sim *sim = load(scene, 1, err, sizeof err);
-    if (!sim)
-        fail_msg("refused: %s", err);
+    Sim *sim = load();
     /* the plug-in subscribed first (materials are read before cracks), yet
        stage 2's subscriber runs first: lists keep stage order */
     const SeamList *l = &sim->hooks.seam[SEAM_TASK1_FIELDS];
@@ -128,10 +126,7 @@ static void subscribers_run_in_stage_order(void **state)
 static void node_with_crack_side_and_two_materials(void **state)
 {
     (void)state;
-    char err[1024];
-    Sim *sim = load(scene, 1, err, sizeof err);
-    if (!sim)
-        fail_msg("refused: %s", err);
+    Sim *sim = load();
     Particles *P = &sim->pts;
     const Grid *g = &sim->grid;
     const FieldTable *F = &sim->fields;

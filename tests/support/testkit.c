@@ -22,6 +22,22 @@ Sim *tk_load(const char *text)
     return sim;
 }
 
+Sim *tk_load_with(const char *text, void (*plugin)(Hooks *h, void *arg),
+                  void *arg, char *err, size_t errlen)
+{
+    Sim *sim = malloc(sizeof *sim);
+    assert_non_null(sim);
+    sim_init(sim);
+    mpm_install_stages(&sim->hooks);
+    if (plugin)
+        plugin(&sim->hooks, arg);
+    if (sim_load_string(sim, text, "scene", err, errlen)) {
+        tk_free(sim);
+        return NULL;
+    }
+    return sim;
+}
+
 Sim *tk_load_file(const char *path, const char *const *overrides)
 {
     Sim *sim = malloc(sizeof *sim);

@@ -28,6 +28,15 @@
  *         is refused. The caller frees with tk_free(). */
 Sim *tk_load(const char *text);
 
+/**
+ * @brief Load a scene given as text with this build's stages and then a
+ *        test's plug-in: @p plugin (may be NULL) registers or subscribes
+ *        what it adds, as a later stage's installer would.
+ * @return the simulation, or NULL with the refusal in @p err.
+ */
+Sim *tk_load_with(const char *text, void (*plugin)(Hooks *h, void *arg),
+                  void *arg, char *err, size_t errlen);
+
 /** @brief Load a scene file with "key=value" overrides (NULL-ended list). */
 Sim *tk_load_file(const char *path, const char *const *overrides);
 
