@@ -174,7 +174,7 @@ int fields_resolve(Sim *sim)
     int n = STENCIL_NODES;
     for (int r = 0; r < F->nrows; r++) {
         int p = F->row_point[r], node[STENCIL_NODES];
-        shape_cell_nodes(g, sim->pts.cell[p], node);
+        stencil_nodes(sim, p, node);
         for (int a = 0; a < n; a++) {
             unsigned key = F->row_key[n * r + a];
             int s = key ? node_slot(sim, node[a], key) : node[a];

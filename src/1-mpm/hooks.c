@@ -18,7 +18,7 @@ int hooks_add_scheme(Hooks *h, const char *name, double before, double after,
                      int reextrapolate)
 {
     if (h->nschemes == HOOKS_MAX)
-        return -1;
+        return h->overflow = -1;
     h->schemes[h->nschemes++] =
         (UpdateScheme){name, before, after, reextrapolate};
     return 0;
@@ -29,7 +29,7 @@ int hooks_add_key(Hooks *h, const char *section, const char *key,
                                struct SceneReader *))
 {
     if (h->nkeys == HOOKS_MAX)
-        return -1;
+        return h->overflow = -1;
     h->keys[h->nkeys++] = (SceneKey){section, key, parse, h->rank};
     return 0;
 }
@@ -48,7 +48,7 @@ int hooks_add_refusal(Hooks *h, const char *key, const char *value,
                       const char *stage)
 {
     if (h->nrefusals == HOOKS_MAX)
-        return -1;
+        return h->overflow = -1;
     h->refusals[h->nrefusals++] = (Refusal){key, value, stage};
     return 0;
 }
@@ -70,7 +70,7 @@ int hooks_add_choice(Hooks *h, const char *key, const char *name,
                      const void *impl)
 {
     if (h->nchoices == HOOKS_MAX)
-        return -1;
+        return h->overflow = -1;
     h->choices[h->nchoices++] = (Choice){key, name, impl};
     return 0;
 }
@@ -104,7 +104,7 @@ int hooks_add_field_key(Hooks *h, const char *name, int bits)
     for (int k = 0; k < h->nfield_keys; k++)
         shift += h->field_keys[k].bits;
     if (h->nfield_keys == HOOKS_MAX || bits < 1 || shift + bits > 31)
-        return -1;
+        return h->overflow = -1;
     h->field_keys[h->nfield_keys++] = (FieldKey){name, shift, bits};
     return shift;
 }
@@ -131,7 +131,7 @@ const UpdateScheme *hooks_find_scheme(const Hooks *h, const char *name)
 static int subscribe(SeamList *l, Subscriber s)
 {
     if (l->n == HOOKS_MAX)
-        return -1;
+        return -1;                  /* the caller reports it */
     int k = l->n;
     while (k > 0 && l->at[k - 1].rank > s.rank) {
         l->at[k] = l->at[k - 1];

@@ -130,6 +130,7 @@ typedef struct Hooks {
     int nfield_keys;                 /**< how many */
     SeamList seam[SEAM_COUNT];       /**< subscribers of each seam */
     int rank;                        /**< stage order of what is added now */
+    int overflow;                    /**< -1 once a registry was full */
 } Hooks;
 /// [hooks]
 

@@ -58,6 +58,12 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
                        size_t errlen)
 {
     SceneReader r = {name, err, errlen};
+    if (sim->hooks.overflow) {
+        snprintf(err, errlen, "%s: this build's stages register more than "
+                 "HOOKS_MAX (%d) entries in one table (raise it in hooks.h)",
+                 name, HOOKS_MAX);
+        return -1;
+    }
     if (scene_read(sim, cfg, &r))
         return -1;
     if (setup_points(sim, err, errlen) || setup_grid(sim, err, errlen) ||
