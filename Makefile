@@ -7,6 +7,8 @@
 #   make docs                the book (Doxygen, warnings are errors)
 #   make figures | figN      the paper's figures, full size (build/figures)
 #   make bench               particle-steps per second and memory per point
+#   make same-numbers BASE=rev  every scene, scheme and stage byte for byte
+#                            against the build of another commit
 #   make exercise EX=1-mpm/shape-functions SOLUTION=my_shape.c
 
 SHELL := /bin/bash
@@ -71,7 +73,7 @@ $(foreach s,$(STAGES),$(eval $(call STAGE_RULES,release,$(s))))
 $(foreach s,$(STAGES),$(eval $(call STAGE_RULES,asan,$(s))))
 
 .PHONY: all deps $(addprefix stage,$(STAGES)) check check-release check-asan \
-        check-exercises exercise docs figures bench clean
+        check-exercises exercise docs figures bench same-numbers clean
 .SECONDARY:
 .PHONY: FORCE
 FORCE:
@@ -150,6 +152,10 @@ $(FIGURES): %: deps
 bench: deps
 	@$(MAKE) --no-print-directory $(foreach s,$(STAGES),build/stage$(s)/mpm)
 	@bash tools/bench.sh
+
+same-numbers: deps
+	@test -n "$(BASE)" || { echo "usage: make same-numbers BASE=<git revision>"; exit 1; }
+	@STAGES="$(STAGES)" bash tools/same_numbers.sh $(BASE)
 
 clean:
 	rm -rf build
