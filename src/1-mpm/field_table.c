@@ -191,7 +191,7 @@ int fields_resolve(Sim *sim)
 }
 /// [fields_resolve]
 
-int fields_multi_field_nodes(const Sim *sim)
+int fields_multi_field_nodes(const struct Sim *sim)
 {
     const FieldTable *F = &sim->fields;
     const Grid *g = &sim->grid;

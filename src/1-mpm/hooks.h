@@ -94,7 +94,7 @@ typedef struct Refusal {
 } Refusal;
 
 /** A named implementation a scene key chooses from ("run.method" = "mpm",
- *  "materials.law" = "hooke", "cracks.search" = "plain"). */
+ *  "materials.law" = "hooke", "run.crack_search" = "plain"). */
 typedef struct Choice {
     const char *key;    /**< the scene key that chooses */
     const char *name;   /**< the value that names this row */

@@ -7,6 +7,7 @@
 
 #include "step.h"
 
+/// [assign_fields]
 int assign_fields(Sim *sim)
 {
     if (sim->hooks.seam[SEAM_TASK1_FIELDS].n == 0)
@@ -16,6 +17,7 @@ int assign_fields(Sim *sim)
         return -1;
     return fields_resolve(sim);
 }
+/// [assign_fields]
 
 /// [sim_step]
 int sim_step(Sim *sim)

@@ -6,6 +6,7 @@
 #include "cracks.h"
 #include "step.h"
 
+/// [node_cm_velocity]
 /** Centre-of-mass velocity of node @p n over all its fields (eq. 32). */
 static void node_cm_velocity(const Sim *sim, int n, double *vx, double *vy)
 {
@@ -20,6 +21,7 @@ static void node_cm_velocity(const Sim *sim, int n, double *vx, double *vy)
     *vx = m > 0 ? px / m : 0.0;
     *vy = m > 0 ? py / m : 0.0;
 }
+/// [node_cm_velocity]
 
 /// [cracks_move]
 int cracks_move(Sim *sim)

@@ -59,12 +59,14 @@ static int segment_crossing(double x1, double y1, double x2, double y2,
 }
 /// [segment_crossing]
 
+/// [crack_segment_side]
 int crack_segment_side(const Crack *c, int k, double px, double py, double nx,
                        double ny)
 {
     return segment_crossing(px, py, nx, ny, c->x[k], c->y[k], c->x[k + 1],
                             c->y[k + 1], k == 0, k + 2 == c->n);
 }
+/// [crack_segment_side]
 
 /// [crack_crossing]
 int crack_crossing(const Crack *c, double px, double py, double nx, double ny)
