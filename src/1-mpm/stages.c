@@ -38,6 +38,7 @@ void mpm_install_stages(Hooks *h)
     stage2_install(h);
 #else
     hooks_add_refusal(h, "cracks", NULL, "stage 2 (multi-field nodes and cracks)");
+    hooks_add_refusal(h, "run.crack_search", NULL, "stage 2 (multi-field nodes and cracks)");
 #endif
     hooks_begin_stage(h, 3);
 #if MPM_STAGE >= 3
