@@ -16,11 +16,13 @@ int cracks_key_fields(Sim *sim, void *state, Seam seam)
     const Particles *P = &sim->pts;
     (void)seam;
     for (int p = 0; p < P->n; p++) {
-        int node[STENCIL_NODES];
+        int node[STENCIL_NODES], cell = P->cell[p];
+        if (C->search->near && !C->search->near(C, cell))
+            continue;                        /* no crack near: field 0 */
         stencil_nodes(sim, p, node);
         for (int a = 0; a < STENCIL_NODES; a++) {
             CrackHit hit;
-            int f = crack_field(C, P->x[p], P->y[p], grid_node_x(g, node[a]),
+            int f = crack_field(C, cell, P->x[p], P->y[p], grid_node_x(g, node[a]),
                                 grid_node_y(g, node[a]), &hit);
             if (f < 0)
                 return step_fail(sim, p, "crack crossings of one line (more "

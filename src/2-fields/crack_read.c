@@ -183,7 +183,7 @@ int cracks_prepare(Sim *sim, void *state, char *err, size_t errlen)
             return -1;
         }
     }
-    if (C->search->update && C->search->update(C)) {
+    if (C->search->update && C->search->update(C, &sim->grid)) {
         snprintf(err, errlen, "%s: cracks: out of memory for the crossing "
                  "search \"%s\"", sc->file, C->search->name);
         return -1;

@@ -56,13 +56,13 @@ int crossings_result(const Crossings *x, CrackHit *hit)
 }
 /// [crossings_result]
 
-int crack_field(const Cracks *C, double px, double py, double nx, double ny,
-                CrackHit *hit)
+int crack_field(const Cracks *C, int cell, double px, double py, double nx,
+                double ny, CrackHit *hit)
 {
     Crossings x;
     CrackHit h;
     x.n = x.lost = 0;
-    C->search->visit(C, px, py, nx, ny, &x);
+    C->search->visit(C, cell, px, py, nx, ny, &x);
     if (x.lost)
         return -1;
     return crossings_result(&x, hit ? hit : &h);
@@ -70,9 +70,10 @@ int crack_field(const Cracks *C, double px, double py, double nx, double ny,
 
 /// [crossing_plain]
 /** Every segment of every crack, in order. */
-static void plain_visit(const Cracks *C, double px, double py, double nx,
-                        double ny, Crossings *x)
+static void plain_visit(const Cracks *C, int cell, double px, double py,
+                        double nx, double ny, Crossings *x)
 {
+    (void)cell;
     for (int c = 0; c < C->ncracks; c++)
         for (int k = 0; k + 1 < C->crack[c].n; k++) {
             int side = crack_segment_side(&C->crack[c], k, px, py, nx, ny);
@@ -81,7 +82,7 @@ static void plain_visit(const Cracks *C, double px, double py, double nx,
         }
 }
 
-const CrossingSearch crossing_plain = {"plain", plain_visit, NULL, NULL};
+const CrossingSearch crossing_plain = {"plain", NULL, plain_visit, NULL, NULL};
 /// [crossing_plain]
 
 int cracks_task7(Sim *sim, void *state, Seam seam)
@@ -90,7 +91,7 @@ int cracks_task7(Sim *sim, void *state, Seam seam)
     (void)seam;
     if (cracks_move(sim))
         return -1;
-    if (C->search->update && C->search->update(C))
+    if (C->search->update && C->search->update(C, &sim->grid))
         return step_fail(sim, -1, "memory for the crossing search", 0);
     return 0;
 }

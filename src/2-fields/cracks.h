@@ -43,17 +43,23 @@ struct Cracks;
 /// [crossing_search]
 /** A row of the crossing-search table (run.crack_search): which segments
  *  Task 1 tests for a particle-node line. Every row must give the same
- *  fields; crossings_result() does not depend on the order of visits. */
+ *  fields; crossings_result() does not depend on the order of visits.
+ *  A point's lines to its nodes lie in its grid cell, so a search may
+ *  answer per cell. */
 typedef struct CrossingSearch {
     const char *name;    /**< value of run.crack_search */
-    /** Test the segments the line from (px, py) to (nx, ny) may cross with
-     *  crossings_test(), in any order. */
-    void (*visit)(const struct Cracks *C, double px, double py, double nx,
-                  double ny, Crossings *x);
-    /** Bring the search's own data up to date with the cracks (after they
-     *  move, Task 7, and before the first step); NULL when it has none.
-     *  @return 0, or -1 to stop the run. */
-    int (*update)(struct Cracks *C);
+    /** May a line inside grid cell @p cell (from a point in it to one of
+     *  its corners) cross a crack? 0 lets Task 1 skip the point and its
+     *  pairs stay in field 0; NULL means always 1. */
+    int (*near)(const struct Cracks *C, int cell);
+    /** Test the segments the line from (px, py) to (nx, ny), inside cell
+     *  @p cell, may cross with crossings_test(), in any order. */
+    void (*visit)(const struct Cracks *C, int cell, double px, double py,
+                  double nx, double ny, Crossings *x);
+    /** Bring the search's own data up to date with the cracks on grid
+     *  @p g (before the first step and after the cracks move, Task 7);
+     *  NULL when it has none. @return 0, or -1 to stop the run. */
+    int (*update)(struct Cracks *C, const Grid *g);
     /** Free the search's own data (Cracks::search_state); NULL when none. */
     void (*release)(struct Cracks *C);
 } CrossingSearch;
@@ -117,12 +123,13 @@ int crossings_result(const Crossings *x, CrackHit *hit);
  * @brief Which field the pair (point, node) belongs to (eq. 2): 0 when
  *        the segment from the point to the node crosses no crack, 1 when
  *        it crosses one with the point above it, 2 below; the scene's
- *        crossing search finds the crossings. @p hit (may be NULL) gets
+ *        crossing search finds the crossings. The line lies in grid cell
+ *        @p cell (the point's; a search that needs no cell takes any). @p hit (may be NULL) gets
  *        the crack, segment and side. -1 when a line crosses more than
  *        CROSSINGS_MAX segments.
  */
-int crack_field(const Cracks *C, double px, double py, double nx, double ny,
-                CrackHit *hit);
+int crack_field(const Cracks *C, int cell, double px, double py, double nx,
+                double ny, CrackHit *hit);
 
 /** @brief The plain search: every segment of every crack. */
 extern const CrossingSearch crossing_plain;

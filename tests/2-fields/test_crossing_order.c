@@ -35,11 +35,12 @@ typedef struct Shuffle {
 } Shuffle;
 
 /** Every segment of every crack, in a new random order at every call. */
-static void shuffled_visit(const Cracks *C, double px, double py, double nx,
-                           double ny, Crossings *x)
+static void shuffled_visit(const Cracks *C, int cell, double px, double py,
+                           double nx, double ny, Crossings *x)
 {
     Shuffle *sh = C->search_state;
     int n = 0;
+    (void)cell;
     for (int c = 0; c < C->ncracks; c++)
         for (int k = 0; k + 1 < C->crack[c].n; k++, n++) {
             sh->crack[n] = c;
@@ -58,8 +59,9 @@ static void shuffled_visit(const Cracks *C, double px, double py, double nx,
 }
 
 /** Make the scratch list for the cracks' segments (once). */
-static int shuffled_update(Cracks *C)
+static int shuffled_update(Cracks *C, const Grid *g)
 {
+    (void)g;
     if (C->search_state)
         return 0;
     int n = 0;
@@ -86,7 +88,7 @@ static void shuffled_release(Cracks *C)
     C->search_state = NULL;
 }
 
-static const CrossingSearch shuffled = {"shuffled", shuffled_visit,
+static const CrossingSearch shuffled = {"shuffled", NULL, shuffled_visit,
                                         shuffled_update, shuffled_release};
 
 /* three cracks on a lattice of quarter units, so that particles and nodes
@@ -106,7 +108,7 @@ static void random_lines_any_order(void **state)
     Cracks plain = {.ncracks = 3, .crack = cracks, .search = &crossing_plain};
     Cracks mixed = plain;
     mixed.search = &shuffled;
-    assert_int_equal(shuffled_update(&mixed), 0);
+    assert_int_equal(shuffled_update(&mixed, NULL), 0);
     uint64_t s = 12345;
     long crossed = 0, odd = 0, lines = 200000;
     for (long k = 0; k < lines; k++) {
@@ -118,8 +120,8 @@ static void random_lines_any_order(void **state)
                 v[j] = 0.25 * (double)(long)(4 * v[j]);
         }
         CrackHit a = {-1, -1, 0}, b = {-1, -1, 0};
-        int fa = crack_field(&plain, v[0], v[1], v[2], v[3], &a);
-        int fb = crack_field(&mixed, v[0], v[1], v[2], v[3], &b);
+        int fa = crack_field(&plain, -1, v[0], v[1], v[2], v[3], &a);
+        int fb = crack_field(&mixed, -1, v[0], v[1], v[2], v[3], &b);
         if (fa != fb || (fa && (a.crack != b.crack || a.segment != b.segment ||
                                 a.side != b.side)))
             fail_msg("line (%g, %g)-(%g, %g): plain %d (crack %d seg %d), "
@@ -127,7 +129,7 @@ static void random_lines_any_order(void **state)
                      a.crack, a.segment, fb, b.crack, b.segment);
         crossed += fa != 0;
         Crossings x = {0, 0, {{0, 0, 0}}};
-        crossing_plain.visit(&plain, v[0], v[1], v[2], v[3], &x);
+        crossing_plain.visit(&plain, -1, v[0], v[1], v[2], v[3], &x);
         odd += x.n > 1;
     }
     printf("  %ld lines: %ld cross a crack, %ld cross more than one segment; "
