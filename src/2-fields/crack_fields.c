@@ -17,7 +17,7 @@ int cracks_key_fields(Sim *sim, void *state, Seam seam)
     (void)seam;
     for (int p = 0; p < P->n; p++) {
         int node[STENCIL_NODES], cell = P->cell[p];
-        if (C->search->near && !C->search->near(C, cell))
+        if (C->near_cell && C->near_cell[cell] < 0)
             continue;                        /* no crack near: field 0 */
         stencil_nodes(sim, p, node);
         for (int a = 0; a < STENCIL_NODES; a++) {

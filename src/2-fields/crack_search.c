@@ -82,7 +82,7 @@ static void plain_visit(const Cracks *C, int cell, double px, double py,
         }
 }
 
-const CrossingSearch crossing_plain = {"plain", NULL, plain_visit, NULL, NULL};
+const CrossingSearch crossing_plain = {"plain", plain_visit, NULL, NULL};
 /// [crossing_plain]
 
 int cracks_task7(Sim *sim, void *state, Seam seam)

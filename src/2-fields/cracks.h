@@ -48,17 +48,14 @@ struct Cracks;
  *  answer per cell. */
 typedef struct CrossingSearch {
     const char *name;    /**< value of run.crack_search */
-    /** May a line inside grid cell @p cell (from a point in it to one of
-     *  its corners) cross a crack? 0 lets Task 1 skip the point and its
-     *  pairs stay in field 0; NULL means always 1. */
-    int (*near)(const struct Cracks *C, int cell);
     /** Test the segments the line from (px, py) to (nx, ny), inside cell
      *  @p cell, may cross with crossings_test(), in any order. */
     void (*visit)(const struct Cracks *C, int cell, double px, double py,
                   double nx, double ny, Crossings *x);
-    /** Bring the search's own data up to date with the cracks on grid
-     *  @p g (before the first step and after the cracks move, Task 7);
-     *  NULL when it has none. @return 0, or -1 to stop the run. */
+    /** Bring the search's own data, and Cracks::near_cell if it keeps
+     *  one, up to date with the cracks on grid @p g (before the first step
+     *  and after the cracks move, Task 7); NULL when it has none.
+     *  @return 0, or -1 to stop the run. */
     int (*update)(struct Cracks *C, const Grid *g);
     /** Free the search's own data (Cracks::search_state); NULL when none. */
     void (*release)(struct Cracks *C);
@@ -74,6 +71,10 @@ typedef struct Cracks {
     int normals;                  /**< Task 1 adds crack normals per pair */
     const CrossingSearch *search; /**< the scene's crossing search */
     void *search_state;           /**< the search's own data */
+    /** Per grid cell (numbered by its lower-left node): negative when no
+     *  crack reaches the cell, so that Task 1 skips its points; kept by
+     *  the search, NULL when it keeps none (every point is tested). */
+    const int *near_cell;
 } Cracks;
 /// [cracks_state]
 

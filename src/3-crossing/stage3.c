@@ -1,0 +1,15 @@
+/**
+ * @file stage3.c
+ * @brief Stage 3 adds two rows to the crossing-search table.
+ */
+#include "stage3.h"
+
+#include "searches.h"
+
+/// [stage3_install]
+void stage3_install(Hooks *h)
+{
+    hooks_add_choice(h, "run.crack_search", "screened", &crossing_screened);
+    hooks_add_choice(h, "run.crack_search", "indexed", &crossing_indexed);
+}
+/// [stage3_install]
