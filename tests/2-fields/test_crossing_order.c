@@ -88,7 +88,7 @@ static void shuffled_release(Cracks *C)
     C->search_state = NULL;
 }
 
-static const CrossingSearch shuffled = {"shuffled", NULL, shuffled_visit,
+static const CrossingSearch shuffled = {"shuffled", shuffled_visit,
                                         shuffled_update, shuffled_release};
 
 /* three cracks on a lattice of quarter units, so that particles and nodes
