@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# make bench: speed and memory of the stage-1 solver on one thread.
+# make bench: speed and memory of the stage-1 solver on one thread, what a
+# crack costs (stage 2) and what the crossing step costs by search (stage 3).
 #
 # Speed: particle-steps per second on the two Sulsky disks refined to about
 # 50,000 and 200,000 points (tools/bench/disks_*.cfg).  Each case runs N
@@ -182,5 +183,68 @@ if [ -x "$S2" ]; then
         printf '  no crack, stage 1: %s instructions per particle-step, limit %s: %s\n' \
             "${I[stage1 dcb_nocrack]}" "$LIMIT_INSTR" \
             "$(awk -v a="${I[stage1 dcb_nocrack]}" -v l="$LIMIT_INSTR" 'BEGIN { print (a <= l ? "within" : "OVER") }')"
+    fi
+fi
+
+# ---- stage 3: what the crossing step costs, by search -------------------------
+S3=build/stage3/mpm
+if [ -x "$S3" ] && command -v valgrind >/dev/null 2>&1; then
+    echo
+    echo "stage 3: the crossing step (Task 1 with cracks) by search, instructions per"
+    echo "particle-step (callgrind, deterministic; musl)"
+    # task1 SCENE SEARCH -> "whole-step Task-1" instructions per particle-step,
+    # from 30 minus 10 steps; Task 1 is cracks_key_fields() with everything
+    # it calls (callgrind's inclusive count)
+    task1() {
+        local scene=$1 search=$2 n pts dt time W=$WORK/t1 a b ta tb
+        read -r pts dt < <($S3 "$scene" -q -o "$WORK/probe" run.time=1e-9 |
+            sed -nE 's/.*: ([0-9]+) points.*dt = ([0-9.eE+-]+) ms.*/\1 \2/p')
+        for n in 10 30; do
+            time=$(awk -v n="$n" -v dt="$dt" 'BEGIN { printf "%.17g", (n - 0.5) * dt }')
+            valgrind --tool=callgrind --callgrind-out-file="$W.$n" $S3 "$scene" -q \
+                -o "$WORK/cg" run.time="$time" ${search:+run.crack_search=$search} \
+                >/dev/null 2>"$W.err"
+        done
+        a=$(callgrind_annotate "$W.10" 2>/dev/null | sed -nE 's/^ *([0-9,]+) .*PROGRAM TOTALS.*/\1/p' | tr -d ,)
+        b=$(callgrind_annotate "$W.30" 2>/dev/null | sed -nE 's/^ *([0-9,]+) .*PROGRAM TOTALS.*/\1/p' | tr -d ,)
+        ta=$(callgrind_annotate --inclusive=yes "$W.10" 2>/dev/null | awk '/cracks_key_fields/ { gsub(",", "", $1); print $1; exit }')
+        tb=$(callgrind_annotate --inclusive=yes "$W.30" 2>/dev/null | awk '/cracks_key_fields/ { gsub(",", "", $1); print $1; exit }')
+        awk -v a="$a" -v b="$b" -v ta="${ta:-0}" -v tb="${tb:-0}" -v n="$pts" \
+            'BEGIN { printf "%d %.0f %.1f\n", n, (b - a) / (20 * n), (tb - ta) / (20 * n) }'
+    }
+    printf '%-34s %8s %9s %12s %12s\n' scene points search "whole step" "Task 1"
+    declare -A W1 T1
+    for scene in figures/fig1/dcb_full.cfg tools/bench/dcb_crack_2x.cfg tools/bench/dcb_crack.cfg; do
+        for search in plain screened indexed; do
+            read -r pts whole t1 < <(task1 "$scene" "$search")
+            W1[$scene.$search]=$whole
+            T1[$scene.$search]=$t1
+            printf '%-34s %8d %9s %12s %12s\n' "$scene" "$pts" "$search" "$whole" "$t1"
+        done
+    done
+    big=tools/bench/dcb_crack.cfg
+    read -r pts nocrack t1 < <(task1 tools/bench/dcb_nocrack.cfg "")
+    printf 'crossing step, refined DCB: plain / screened = %.1f, plain / indexed = %.1f (the paper: about 10 from screening)\n' \
+        "$(awk -v a="${T1[$big.plain]}" -v b="${T1[$big.screened]}" 'BEGIN { print a / b }')" \
+        "$(awk -v a="${T1[$big.plain]}" -v b="${T1[$big.indexed]}" 'BEGIN { print a / b }')"
+    printf 'crack overhead in instructions, refined DCB, indexed: %s / %s = %.3f (goal 1.05; the paper 1.10)\n' \
+        "${W1[$big.indexed]}" "$nocrack" \
+        "$(awk -v a="${W1[$big.indexed]}" -v b="$nocrack" 'BEGIN { print a / b }')"
+
+    # the same as time, pair by pair: each repeat runs both, the ratio of
+    # the two; the median of the ratios (neighbours slow both alike)
+    N=${STEPSDCB:-300}
+    read -r npts dt nx ny < <(MPM=$S3 header "$big")
+    ratios=()
+    for ((r = 0; r < REPEAT; r++)); do
+        a=$(REPEAT=1 RUN=$S3 steps_time tools/bench/dcb_nocrack.cfg musl "$N" "$dt")
+        b=$(REPEAT=1 RUN=$S3 steps_time "$big" musl "$N" "$dt")
+        [ "$a" = fail ] || [ "$b" = fail ] && continue
+        ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.4f", b / a }')")
+    done
+    if [ ${#ratios[@]} -gt 0 ]; then
+        printf 'crack overhead in time, refined DCB, indexed, %d steps, pair by pair: median %s of %s\n' \
+            "$N" "$(printf '%s\n' "${ratios[@]}" | sort -n | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }')" \
+            "$(echo "${ratios[@]}")"
     fi
 fi
