@@ -11,30 +11,6 @@
 #include "cracks.h"
 #include "scene_read.h"
 
-/** Do segments (a, b) and (c, d) share a point? (closed segments) */
-static int segments_meet(const double *a, const double *b, const double *c,
-                         const double *d)
-{
-    double d1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    double d2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
-    double d3 = (d[0] - c[0]) * (a[1] - c[1]) - (d[1] - c[1]) * (a[0] - c[0]);
-    double d4 = (d[0] - c[0]) * (b[1] - c[1]) - (d[1] - c[1]) * (b[0] - c[0]);
-    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) &&
-        ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-        return 1;
-    /* collinear touching */
-    const double *p[4][3] = {{a, b, c}, {a, b, d}, {c, d, a}, {c, d, b}};
-    double dd[4] = {d1, d2, d3, d4};
-    for (int k = 0; k < 4; k++)
-        if (dd[k] == 0 &&
-            fmin(p[k][0][0], p[k][1][0]) <= p[k][2][0] &&
-            p[k][2][0] <= fmax(p[k][0][0], p[k][1][0]) &&
-            fmin(p[k][0][1], p[k][1][1]) <= p[k][2][1] &&
-            p[k][2][1] <= fmax(p[k][0][1], p[k][1][1]))
-            return 1;
-    return 0;
-}
-
 /** Read one crack's points and check them. */
 static int read_crack(SceneReader *r, const Hooks *h, const Scene *sc,
                       const config_setting_t *g, Crack *c)
@@ -82,14 +58,12 @@ static int read_crack(SceneReader *r, const Hooks *h, const Scene *sc,
             return scene_error(r, e, "points", "segment %d has zero length at "
                                "(%g, %g)", k - 1, xy[0], xy[1]);
     }
-    for (int i = 0; i + 1 < n; i++)
-        for (int j = i + 2; j + 1 < n; j++) {
-            double a[2] = {c->x[i], c->y[i]}, b[2] = {c->x[i + 1], c->y[i + 1]};
-            double cc[2] = {c->x[j], c->y[j]}, d[2] = {c->x[j + 1], c->y[j + 1]};
-            if (segments_meet(a, b, cc, d))
-                return scene_error(r, l, "points", "the crack crosses itself "
-                                   "(segments %d and %d)", i, j);
-        }
+    int si, sj, cross = crack_self_crossing(c, &si, &sj);
+    if (cross < 0)
+        return scene_error(r, l, "points", "out of memory");
+    if (cross)
+        return scene_error(r, l, "points", "the crack crosses itself "
+                           "(segments %d and %d)", si, sj);
     c->xmin = c->xmax = c->x[0];
     c->ymin = c->ymax = c->y[0];
     for (int k = 1; k < n; k++) {

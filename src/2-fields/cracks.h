@@ -135,6 +135,16 @@ int crack_field(const Cracks *C, int cell, double px, double py, double nx,
 /** @brief The plain search: every segment of every crack. */
 extern const CrossingSearch crossing_plain;
 
+/**
+ * @brief Does crack @p c cross or touch itself (two segments that are not
+ *        neighbours share a point)? The segments are binned on a grid of
+ *        about as many cells as segments, so the check costs about n, not
+ *        n^2, for a crack of n segments of similar length.
+ * @return 1 with the first such pair (in the order i < j, then j) in *i,
+ *         *j; 0 when none; -1 when memory is exhausted.
+ */
+int crack_self_crossing(const Crack *c, int *i, int *j);
+
 /** @brief Parse the "cracks" section and subscribe stage 2's hooks. */
 int cracks_read(Sim *sim, const config_setting_t *s, int index,
                 struct SceneReader *r);
