@@ -92,7 +92,7 @@ EXERCISES := $(patsubst exercises/%/replaces,%,$(wildcard exercises/*/*/replaces
 ex_stage = $(call stage_num,$(firstword $(subst /, ,$(1))))
 ex_tests = $(foreach t,$(shell cat exercises/$(1)/tests),build/exercises/$(1)/$(2)/$(t))
 EXERCISE_BINS := $(foreach e,$(EXERCISES),$(call ex_tests,$(e),reference) $(call ex_tests,$(e),stub))
-EXERCISE_CHECKS := $(foreach e,$(EXERCISES),$(call ex_tests,$(e),reference) !$(call ex_tests,$(e),stub))
+EXERCISE_CHECKS := $(foreach e,$(EXERCISES),$(call ex_tests,$(e),reference) $(addprefix !,$(call ex_tests,$(e),stub)))
 
 # $(1) = exercise, $(2) = reference | stub | student, $(3) = solution file
 # $(4) = FORCE for a student's file: SOLUTION may name another file each time
