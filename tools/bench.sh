@@ -192,26 +192,7 @@ if [ -x "$S3" ] && command -v valgrind >/dev/null 2>&1; then
     echo
     echo "stage 3: the crossing step (Task 1 with cracks) by search, instructions per"
     echo "particle-step (callgrind, deterministic; musl)"
-    # task1 SCENE SEARCH -> "whole-step Task-1" instructions per particle-step,
-    # from 30 minus 10 steps; Task 1 is cracks_key_fields() with everything
-    # it calls (callgrind's inclusive count)
-    task1() {
-        local scene=$1 search=$2 n pts dt time W=$WORK/t1 a b ta tb
-        read -r pts dt < <($S3 "$scene" -q -o "$WORK/probe" run.time=1e-9 |
-            sed -nE 's/.*: ([0-9]+) points.*dt = ([0-9.eE+-]+) ms.*/\1 \2/p')
-        for n in 10 30; do
-            time=$(awk -v n="$n" -v dt="$dt" 'BEGIN { printf "%.17g", (n - 0.5) * dt }')
-            valgrind --tool=callgrind --callgrind-out-file="$W.$n" $S3 "$scene" -q \
-                -o "$WORK/cg" run.time="$time" ${search:+run.crack_search=$search} \
-                >/dev/null 2>"$W.err"
-        done
-        a=$(callgrind_annotate "$W.10" 2>/dev/null | sed -nE 's/^ *([0-9,]+) .*PROGRAM TOTALS.*/\1/p' | tr -d ,)
-        b=$(callgrind_annotate "$W.30" 2>/dev/null | sed -nE 's/^ *([0-9,]+) .*PROGRAM TOTALS.*/\1/p' | tr -d ,)
-        ta=$(callgrind_annotate --inclusive=yes "$W.10" 2>/dev/null | awk '/cracks_key_fields/ { gsub(",", "", $1); print $1; exit }')
-        tb=$(callgrind_annotate --inclusive=yes "$W.30" 2>/dev/null | awk '/cracks_key_fields/ { gsub(",", "", $1); print $1; exit }')
-        awk -v a="$a" -v b="$b" -v ta="${ta:-0}" -v tb="${tb:-0}" -v n="$pts" \
-            'BEGIN { printf "%d %.0f %.1f\n", n, (b - a) / (20 * n), (tb - ta) / (20 * n) }'
-    }
+    task1() { bash tools/task1_cost.sh "$S3" "$@"; }
     printf '%-34s %8s %9s %12s %12s\n' scene points search "whole step" "Task 1"
     declare -A W1 T1
     for scene in figures/fig1/dcb_full.cfg tools/bench/dcb_crack_2x.cfg tools/bench/dcb_crack.cfg; do

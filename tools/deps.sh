@@ -1,16 +1,17 @@
 #!/bin/sh
 # Bring the Debian packages a job needs, or say exactly which are missing.
 #   sh tools/deps.sh test      compiler, make, libconfig, cmocka, LAPACKE
-#   sh tools/deps.sh figures   the above and gnuplot
+#   sh tools/deps.sh figures   the above, gnuplot and valgrind (fig-crossing
+#                              counts instructions)
 #   sh tools/deps.sh docs      doxygen, MathJax, and what the figures need
 set -u
 job=${1:-test}
 base="gcc make libc6-dev libconfig-dev libcmocka-dev liblapacke-dev"
 case "$job" in
   test) want="$base" ;;
-  figures) want="$base gnuplot-nox" ;;
-  docs) want="doxygen libjs-mathjax gnuplot-nox $base" ;;
-  all) want="$base gnuplot-nox doxygen libjs-mathjax" ;;
+  figures) want="$base gnuplot-nox valgrind" ;;
+  docs) want="doxygen libjs-mathjax gnuplot-nox valgrind $base" ;;
+  all) want="$base gnuplot-nox valgrind doxygen libjs-mathjax" ;;
   *) echo "usage: sh tools/deps.sh test|figures|docs|all" >&2; exit 2 ;;
 esac
 
