@@ -43,6 +43,10 @@ void mpm_install_stages(Hooks *h)
     hooks_begin_stage(h, 3);
 #if MPM_STAGE >= 3
     stage3_install(h);
+#else
+    hooks_add_refusal(h, "cracks.arc", NULL, "stage 3 (line crossing)");
+    hooks_add_refusal(h, "run.crack_search", "screened", "stage 3 (line crossing)");
+    hooks_add_refusal(h, "run.crack_search", "indexed", "stage 3 (line crossing)");
 #endif
     hooks_begin_stage(h, 4);
 #if MPM_STAGE >= 4

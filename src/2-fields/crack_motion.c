@@ -47,14 +47,7 @@ int cracks_move(Sim *sim)
                   c->y[j] < ymax))
                 return step_fail(sim, -1, "crack point (left the grid)", c->x[j]);
         }
-        c->xmin = c->xmax = c->x[0];
-        c->ymin = c->ymax = c->y[0];
-        for (int j = 1; j < c->n; j++) {
-            c->xmin = c->x[j] < c->xmin ? c->x[j] : c->xmin;
-            c->xmax = c->x[j] > c->xmax ? c->x[j] : c->xmax;
-            c->ymin = c->y[j] < c->ymin ? c->y[j] : c->ymin;
-            c->ymax = c->y[j] > c->ymax ? c->y[j] : c->ymax;
-        }
+        crack_extent(c);
     }
     return 0;
 }

@@ -11,27 +11,16 @@
 #include "cracks.h"
 #include "scene_read.h"
 
-/** Read one crack's points and check them. */
-static int read_crack(SceneReader *r, const Hooks *h, const Scene *sc,
-                      const config_setting_t *g, Crack *c)
+/** Read the list of points of one crack into @p c (checked afterwards by
+ *  crack_check_points()). */
+static int read_points(SceneReader *r, const config_setting_t *l, Crack *c)
 {
-    static const char *const keys[] = {"points", NULL};
-    if (scene_check_open_keys(r, h, "cracks", g, keys, NULL))
-        return -1;
-    const config_setting_t *l = config_setting_get_member(g, "points");
-    if (!l)
-        return scene_error(r, g, "points", "missing (required)");
     int n = config_setting_length(l);
     if (config_setting_type(l) != CONFIG_TYPE_LIST || n < 2)
         return scene_error(r, l, "points", "expected a list of at least two "
                            "points ( [x, y], [x, y], ... )");
-    c->n = n;
-    c->line = (int)config_setting_source_line(g);
-    c->x = malloc(sizeof(double) * (size_t)n);
-    c->y = malloc(sizeof(double) * (size_t)n);
-    if (!c->x || !c->y)
+    if (crack_alloc_points(c, n))
         return scene_error(r, l, "points", "out of memory");
-    double gx1 = sc->ox + sc->ncx * sc->dx, gy1 = sc->oy + sc->ncy * sc->dy;
     for (int k = 0; k < n; k++) {
         const config_setting_t *e = config_setting_get_elem(l, (unsigned)k);
         double xy[2];
@@ -49,29 +38,81 @@ static int read_crack(SceneReader *r, const Hooks *h, const Scene *sc,
             else
                 return scene_error(r, e, "points", "point %d: expected [x, y]", k);
         }
-        if (!(xy[0] >= sc->ox && xy[0] < gx1 && xy[1] >= sc->oy && xy[1] < gy1))
-            return scene_error(r, e, "points", "point %d (%g, %g) lies outside "
-                               "the grid", k, xy[0], xy[1]);
         c->x[k] = xy[0];
         c->y[k] = xy[1];
+    }
+    return 0;
+}
+
+int crack_alloc_points(Crack *c, int n)
+{
+    free(c->x);
+    free(c->y);
+    c->n = n;
+    c->x = malloc(sizeof(double) * (size_t)n);
+    c->y = malloc(sizeof(double) * (size_t)n);
+    return c->x && c->y ? 0 : -1;
+}
+
+/// [crack_check_points]
+int crack_check_points(SceneReader *r, const config_setting_t *s,
+                       const char *key, const Scene *sc, Crack *c)
+{
+    double gx1 = sc->ox + sc->ncx * sc->dx, gy1 = sc->oy + sc->ncy * sc->dy;
+    int list = config_setting_type(s) == CONFIG_TYPE_LIST &&
+               config_setting_length(s) == c->n;
+    for (int k = 0; k < c->n; k++) {
+        /* a list of points names the line of the point itself */
+        const config_setting_t *e = list ? config_setting_get_elem(s, (unsigned)k) : s;
+        if (!(c->x[k] >= sc->ox && c->x[k] < gx1 && c->y[k] >= sc->oy &&
+              c->y[k] < gy1))
+            return scene_error(r, e, key, "point %d (%g, %g) lies outside "
+                               "the grid", k, c->x[k], c->y[k]);
         if (k > 0 && c->x[k] == c->x[k - 1] && c->y[k] == c->y[k - 1])
-            return scene_error(r, e, "points", "segment %d has zero length at "
-                               "(%g, %g)", k - 1, xy[0], xy[1]);
+            return scene_error(r, e, key, "segment %d has zero length at "
+                               "(%g, %g)", k - 1, c->x[k], c->y[k]);
     }
     int si, sj, cross = crack_self_crossing(c, &si, &sj);
     if (cross < 0)
-        return scene_error(r, l, "points", "out of memory");
+        return scene_error(r, s, key, "out of memory");
     if (cross)
-        return scene_error(r, l, "points", "the crack crosses itself "
+        return scene_error(r, s, key, "the crack crosses itself "
                            "(segments %d and %d)", si, sj);
+    crack_extent(c);
+    return 0;
+}
+/// [crack_check_points]
+
+void crack_extent(Crack *c)
+{
     c->xmin = c->xmax = c->x[0];
     c->ymin = c->ymax = c->y[0];
-    for (int k = 1; k < n; k++) {
-        c->xmin = fmin(c->xmin, c->x[k]);
-        c->xmax = fmax(c->xmax, c->x[k]);
-        c->ymin = fmin(c->ymin, c->y[k]);
-        c->ymax = fmax(c->ymax, c->y[k]);
+    for (int j = 1; j < c->n; j++) {
+        c->xmin = c->x[j] < c->xmin ? c->x[j] : c->xmin;
+        c->xmax = c->x[j] > c->xmax ? c->x[j] : c->xmax;
+        c->ymin = c->y[j] < c->ymin ? c->y[j] : c->ymin;
+        c->ymax = c->y[j] > c->ymax ? c->y[j] : c->ymax;
     }
+}
+
+/** Read one crack: its points, then the keys later stages add to a crack
+ *  (which may give the points another way), then check them. */
+static int read_crack(Sim *sim, SceneReader *r, const config_setting_t *g,
+                      int index, Crack *c)
+{
+    static const char *const keys[] = {"points", NULL};
+    if (scene_check_open_keys(r, &sim->hooks, "cracks", g, keys, NULL))
+        return -1;
+    c->line = (int)config_setting_source_line(g);
+    const config_setting_t *l = config_setting_get_member(g, "points");
+    if (l && read_points(r, l, c))
+        return -1;
+    if (scene_read_open_keys(sim, r, "cracks", g, index))
+        return -1;
+    if (c->n == 0)
+        return scene_error(r, g, "points", "missing (required)");
+    if (l && crack_check_points(r, l, "points", &sim->scene, c))
+        return -1;
     return 0;
 }
 
@@ -120,8 +161,7 @@ int cracks_read(Sim *sim, const config_setting_t *s, int index, SceneReader *r)
         if (config_setting_type(g) != CONFIG_TYPE_GROUP)
             return scene_error(r, g, "cracks", "entry %d: expected a group", k);
         C->ncracks = k + 1;
-        if (read_crack(r, &sim->hooks, &sim->scene, g, &C->crack[k]) ||
-            scene_read_open_keys(sim, r, "cracks", g, k))
+        if (read_crack(sim, r, g, k, &C->crack[k]))
             return -1;
     }
     if (!C->search)                      /* the latest stage's search */

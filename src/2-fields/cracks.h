@@ -145,6 +145,23 @@ extern const CrossingSearch crossing_plain;
  */
 int crack_self_crossing(const Crack *c, int *i, int *j);
 
+/** @brief Make room for @p n points in @p c (freeing any it had).
+ *  @return 0, or -1 when memory is exhausted. */
+int crack_alloc_points(Crack *c, int n);
+
+/**
+ * @brief Check a crack's points as the scene gave them under @p key of
+ *        setting @p s: inside the grid, no segment of zero length, no
+ *        self-crossing; then set its extent. Messages name @p s (or, for
+ *        a list of the crack's points, the point's own line).
+ * @return 0, or -1 with the message in @p r.
+ */
+int crack_check_points(struct SceneReader *r, const config_setting_t *s,
+                       const char *key, const Scene *sc, Crack *c);
+
+/** @brief Set the extent (Crack::xmin ...) of the crack's points. */
+void crack_extent(Crack *c);
+
 /** @brief Parse the "cracks" section and subscribe stage 2's hooks. */
 int cracks_read(Sim *sim, const config_setting_t *s, int index,
                 struct SceneReader *r);

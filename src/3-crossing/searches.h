@@ -3,7 +3,7 @@
  * @brief Chapter 3's crossing searches: extent screening (the paper's
  *        subtask 1) and an index of crack segments by grid cell. Both are
  *        rows of stage 2's crossing-search table and must give exactly the
- *        fields of the plain search.
+ *        fields of the plain search. And curved cracks given as arcs.
  */
 #ifndef MPM_SEARCHES_H
 #define MPM_SEARCHES_H
@@ -45,5 +45,15 @@ extern const CrossingSearch crossing_screened;
 
 /** @brief The segment index: test only the segments that reach the cell. */
 extern const CrossingSearch crossing_indexed;
+
+/**
+ * @brief Read cracks[i].arc = { center = [x, y]; radius = r;
+ *        angles = [from, to]; segments = n; }: the crack runs on the circle
+ *        from angle @e from to angle @e to (degrees, counter-clockwise when
+ *        to > from), as n equal segments (by default about half a cell
+ *        long each); the points are checked as a list of points would be.
+ */
+int crack_read_arc(Sim *sim, const config_setting_t *s, int index,
+                   struct SceneReader *r);
 
 #endif

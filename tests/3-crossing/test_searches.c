@@ -5,7 +5,7 @@
  *        half of them with points and nodes snapped onto the cracks' own
  *        lattice (on segments, on their lines, on vertices), against
  *        polylines that zig-zag through cells, kink on nodes and run along
- *        grid lines; and a whole run of a kinked crack.
+ *        grid lines; whole runs of a kinked crack and of an arc.
  */
 #include "testkit.h"
 
@@ -146,31 +146,51 @@ static void kinked_crack_run_same_fields(void **state)
     }
 }
 
-/** Below the kinked crack's line y = c(x), for x left of its tip. */
-static double crack_y(const Crack *c, double x)
+/** Which side of crack @p c the point (x, y) starts on: +1, -1, or 0 where
+ *  the crack does not separate it (past the tip). */
+typedef int (*SideOf)(const Crack *c, double x, double y);
+
+/** The kinked crack: above or below its line y = c(x), left of its tip. */
+static int side_of_kinked(const Crack *c, double x, double y)
 {
     for (int j = 0; j + 1 < c->n; j++)
         if (x >= c->x[j] && x <= c->x[j + 1])
-            return c->y[j] + (c->y[j + 1] - c->y[j]) * (x - c->x[j]) /
-                                 (c->x[j + 1] - c->x[j]);
-    return NAN;
+            return y > c->y[j] + (c->y[j + 1] - c->y[j]) * (x - c->x[j]) /
+                               (c->x[j + 1] - c->x[j]) ? 1 : -1;
+    return 0;
 }
 
-static void kinked_crack_sides_never_share_a_field(void **state)
+/* tests/3-crossing/scenes/dcb_arc.cfg: the circle and the arc's angles */
+static const double ARC_X = 0.0, ARC_Y = 60.0, ARC_R = 60.0;
+static const double ARC_FROM = -92.0, ARC_TO = -60.0;
+
+/** The arc crack: inside or outside its circle, within its angles. */
+static int side_of_arc(const Crack *c, double x, double y)
 {
-    (void)state;
+    (void)c;
+    double a = atan2(y - ARC_Y, x - ARC_X) * (180.0 / 3.14159265358979323846);
+    if (a < ARC_FROM || a > ARC_TO)
+        return 0;
+    return hypot(x - ARC_X, y - ARC_Y) < ARC_R ? 1 : -1;
+}
+
+/** Run @p scene 300 steps: no node slot ever holds points of both sides
+ *  of its crack, away from the tip (within two cells of it the crack
+ *  does not separate the body); and the crack did split nodes. */
+static void sides_never_share_a_field(const char *scene, SideOf side_of)
+{
     static const char *const over[] = {"run.crack_search=indexed", NULL};
-    Sim *sim = tk_load_file("tests/3-crossing/scenes/dcb_kinked.cfg", over);
+    Sim *sim = tk_load_file(scene, over);
     const Particles *P = &sim->pts;
     const Grid *g = &sim->grid;
     /* side of each point, fixed by where it starts */
     const Crack *c0 = &cracks_of(sim)->crack[0];
-    double tip = c0->x[c0->n - 1];
+    double tipx = c0->x[c0->n - 1], tipy = c0->y[c0->n - 1];
     signed char *side = malloc((size_t)P->n);
     unsigned char *seen = malloc((size_t)g->capacity + 1);
     assert_non_null(side);
     for (int p = 0; p < P->n; p++)
-        side[p] = P->x[p] < tip ? (P->y[p] > crack_y(c0, P->x[p]) ? 1 : -1) : 0;
+        side[p] = (signed char)side_of(c0, P->x[p], P->y[p]);
     long split = 0;
     for (int step = 0; step < 300; step++) {
         tk_steps(sim, 1);
@@ -184,15 +204,16 @@ static void kinked_crack_sides_never_share_a_field(void **state)
             stencil_of_point(sim, p, &st);
             for (int a = 0; a < STENCIL_NODES; a++) {
                 int nd = grid_slot_node(g, st.slot[a]);
-                if (grid_node_x(g, nd) > tip - 2 * g->dx)
-                    continue;                /* near and past the tip */
+                if (hypot(grid_node_x(g, nd) - tipx, grid_node_y(g, nd) - tipy) <
+                    2 * fmax(g->dx, g->dy))
+                    continue;                /* near the tip */
                 seen[st.slot[a]] |= side[p] > 0 ? 1 : 2;
             }
         }
         for (int s = 0; s < g->nslots; s++) {
             if (seen[s] == 3)
-                fail_msg("step %d: slot %d of node %d holds both sides", step, s,
-                         grid_slot_node(g, s));
+                fail_msg("%s, step %d: slot %d of node %d holds both sides",
+                         scene, step, s, grid_slot_node(g, s));
             split += s >= g->nnodes && seen[s];
         }
     }
@@ -202,12 +223,41 @@ static void kinked_crack_sides_never_share_a_field(void **state)
     tk_free(sim);
 }
 
+static void kinked_crack_sides_never_share_a_field(void **state)
+{
+    (void)state;
+    sides_never_share_a_field("tests/3-crossing/scenes/dcb_kinked.cfg", side_of_kinked);
+}
+
+/** An arc in a scene is its polyline: the default number of segments
+ *  (about half a cell each), every point on the circle, the ends at the
+ *  arc's angles; and its sides never share a field. */
+static void arc_crack_is_a_polyline_on_its_circle(void **state)
+{
+    (void)state;
+    Sim *sim = tk_load_file("tests/3-crossing/scenes/dcb_arc.cfg", NULL);
+    const Crack *c = &cracks_of(sim)->crack[0];
+    double rad = 3.14159265358979323846 / 180.0;
+    /* 32 degrees of a 60 mm circle in steps of at most half of 2 mm */
+    assert_int_equal(c->n - 1, (int)ceil(32.0 * rad * ARC_R / 1.0));
+    for (int k = 0; k < c->n; k++)
+        assert_close(hypot(c->x[k] - ARC_X, c->y[k] - ARC_Y), ARC_R, 1e-13);
+    assert_close(c->x[0], ARC_R * cos(ARC_FROM * rad), 1e-13);
+    assert_close(c->y[c->n - 1], ARC_Y + ARC_R * sin(ARC_TO * rad), 1e-13);
+    for (int k = 1; k < c->n; k++)        /* equal segments, in order */
+        assert_close(hypot(c->x[k] - c->x[k - 1], c->y[k] - c->y[k - 1]),
+                     2 * ARC_R * sin(16.0 * rad / (c->n - 1)), 1e-12);
+    tk_free(sim);
+    sides_never_share_a_field("tests/3-crossing/scenes/dcb_arc.cfg", side_of_arc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(every_line_same_fields),
         cmocka_unit_test(kinked_crack_run_same_fields),
         cmocka_unit_test(kinked_crack_sides_never_share_a_field),
+        cmocka_unit_test(arc_crack_is_a_polyline_on_its_circle),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
