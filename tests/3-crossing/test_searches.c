@@ -44,17 +44,8 @@ static void every_line_same_fields(void **state)
     assert_int_equal(grid_init(&g, -1.0, -1.0, 0.5, 0.5, 8, 6), 0);
     Crack cracks[3] = {{5, zx, zy, 0, 0, 0, 0, 0}, {5, kx, ky, 0, 0, 0, 0, 0},
                        {2, sx, sy, 0, 0, 0, 0, 0}};
-    for (int k = 0; k < 3; k++) {           /* extents, as stage 2 keeps them */
-        Crack *c = &cracks[k];
-        c->xmin = c->xmax = c->x[0];
-        c->ymin = c->ymax = c->y[0];
-        for (int j = 1; j < c->n; j++) {
-            c->xmin = fmin(c->xmin, c->x[j]);
-            c->xmax = fmax(c->xmax, c->x[j]);
-            c->ymin = fmin(c->ymin, c->y[j]);
-            c->ymax = fmax(c->ymax, c->y[j]);
-        }
-    }
+    for (int k = 0; k < 3; k++)
+        crack_extent(&cracks[k]);
     Cracks plain = {.ncracks = 3, .crack = cracks, .search = &crossing_plain};
     Cracks screened = plain, indexed = plain;
     screened.search = &crossing_screened;
