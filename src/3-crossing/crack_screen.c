@@ -3,27 +3,10 @@
  * @brief Extent screening (Appendix, subtask 1): a crack whose bounding
  *        box misses the box of the particle-node line is not tested.
  */
-#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
 #include "searches.h"
-
-void search_grid_of(SearchGrid *sg, const Grid *g)
-{
-    sg->ox = g->ox;
-    sg->oy = g->oy;
-    sg->dx = g->dx;
-    sg->dy = g->dy;
-    sg->ncx = g->ncx;
-    sg->ncy = g->ncy;
-    sg->nnx = g->nnx;
-    /* a point within a few ulps of the largest coordinate from a line can
-       be classified on it; 1024 ulps of that coordinate is a safe margin */
-    double m = fmax(fmax(fabs(g->ox), fabs(g->ox + g->ncx * g->dx)),
-                    fmax(fabs(g->oy), fabs(g->oy + g->ncy * g->dy)));
-    sg->eps = 1024 * DBL_EPSILON * (m + fmax(g->dx, g->dy));
-}
 
 /** Make the search's copy of the grid (once). */
 static int screened_update(Cracks *C, const Grid *g)
