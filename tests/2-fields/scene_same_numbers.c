@@ -3,7 +3,8 @@
  * @brief Same numbers across stages (architecture property 3): a scene an
  *        earlier stage can run gives byte-identical output on this stage.
  *
- * Every uncracked scene of the repository, with every update scheme, runs
+ * Every uncracked scene of the repository (a second test checks that none
+ * is missing), with every update scheme, runs
  * on build/stage1/mpm and on this build's program (MPM_BIN); every cracked
  * scene runs on build/stage2/mpm and on MPM_BIN. The scenes between them
  * hold every input of stages 1 and 2: two materials, plane strain and
@@ -38,6 +39,17 @@ static const SameCase cases[] = {
     {"figures/fig6/beam_impact.cfg", "0.01", 1},
     {"figures/fig1/dcb_full.cfg", "6.0", 2},
     {"tools/bench/dcb_crack.cfg", "1.0", 2},
+    {"tools/bench/dcb_crack_2x.cfg", "2.0", 2},
+    {"tools/bench/dcb_nocrack.cfg", "1.0", 1},
+    {"tools/bench/disks_50k.cfg", "0.02", 1},
+    {"tests/3-crossing/scenes/dcb_kinked.cfg", "6.0", 2},
+};
+
+/** Scenes of the repository that no earlier stage runs or that another
+ *  case covers, and why. */
+static const char *const elsewhere[][2] = {
+    {"tools/bench/disks_200k.cfg", "disks_50k.cfg with four times the points"},
+    {"tests/3-crossing/scenes/dcb_arc.cfg", "an arc is stage 3's"},
 };
 
 static const char *const schemes[] = {"usl", "musl", "usf"};
@@ -120,9 +132,38 @@ static void every_scene_every_scheme(void **state)
     printf("  %d runs byte-identical\n", runs);
 }
 
+/** Every scene file of the repository (outside build/ and the bad/
+ *  folders) is a case above, or is listed with the reason it is not. */
+static void every_scene_of_the_repository_is_a_case(void **state)
+{
+    (void)state;
+    FILE *f = popen("find . -name '*.cfg' -not -path './build/*' "
+                    "-not -path '*/bad/*' | sort", "r");
+    assert_non_null(f);
+    char line[512];
+    int n = 0;
+    while (fgets(line, sizeof line, f)) {
+        line[strcspn(line, "\n")] = '\0';
+        const char *path = line + 2;           /* less "./" */
+        int found = 0;
+        for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
+            found |= strcmp(cases[k].scene, path) == 0;
+        for (size_t k = 0; k < sizeof elsewhere / sizeof elsewhere[0]; k++)
+            found |= strcmp(elsewhere[k][0], path) == 0;
+        if (!found)
+            fail_msg("%s is not a case of scene_same_numbers.c (add it, or list "
+                     "it in elsewhere[] with the reason)", path);
+        n++;
+    }
+    assert_int_equal(pclose(f), 0);
+    printf("  %d scene files, every one a case or listed with its reason\n", n);
+    assert_true(n >= 15);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(every_scene_of_the_repository_is_a_case),
         cmocka_unit_test(every_scene_every_scheme),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
