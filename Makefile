@@ -94,7 +94,19 @@ ex_tests = $(foreach t,$(shell cat exercises/$(1)/tests),build/exercises/$(1)/$(
 EXERCISE_BINS := $(foreach e,$(EXERCISES),$(call ex_tests,$(e),reference) $(call ex_tests,$(e),stub))
 EXERCISE_CHECKS := $(foreach e,$(EXERCISES),$(call ex_tests,$(e),reference) $(addprefix !,$(call ex_tests,$(e),stub)))
 
-# $(1) = exercise, $(2) = reference | stub | student, $(3) = solution file
+# The stage's library less the object the exercise replaces, so that the
+# solution is the only definition of what it must define: a file that lacks
+# a function fails to link, naming it.
+ex_replaced = $(patsubst src/%.c,build/stage$(call ex_stage,$(1))/obj/%.o,$(shell cat exercises/$(1)/replaces))
+define EXERCISE_LIB
+build/exercises/$(1)/libmpm.a: $$(filter-out %/main.o $(call ex_replaced,$(1)),$$(OBJ_release_$(call ex_stage,$(1))))
+	@mkdir -p $$(@D)
+	@rm -f $$@
+	ar rcs $$@ $$^
+endef
+$(foreach e,$(EXERCISES),$(eval $(call EXERCISE_LIB,$(e))))
+
+# $(1) = exercise, $(2) = reference | stub | empty | student, $(3) = solution
 # $(4) = FORCE for a student's file: SOLUTION may name another file each time
 define EXERCISE_RULES
 build/exercises/$(1)/$(2)/solution.o: $(3) $(4)
@@ -103,11 +115,12 @@ build/exercises/$(1)/$(2)/solution.o: $(3) $(4)
 -include build/exercises/$(1)/$(2)/solution.d
 build/exercises/$(1)/$(2)/%: build/stage$(call ex_stage,$(1))/tests/$(firstword $(subst /, ,$(1)))/%.o \
         build/exercises/$(1)/$(2)/solution.o $$(SUPPORT_release_$(call ex_stage,$(1))) \
-        build/stage$(call ex_stage,$(1))/libmpm.a
+        build/exercises/$(1)/libmpm.a
 	$$(CC) $$^ $$(TEST_LIBS) -o $$@
 endef
 $(foreach e,$(EXERCISES),$(eval $(call EXERCISE_RULES,$(e),reference,$(shell cat exercises/$(e)/replaces))))
 $(foreach e,$(EXERCISES),$(eval $(call EXERCISE_RULES,$(e),stub,exercises/$(e)/stub.c)))
+$(foreach e,$(EXERCISES),$(eval $(call EXERCISE_RULES,$(e),empty,tools/empty_solution.c)))
 ifdef EX
 ifdef SOLUTION
 $(eval $(call EXERCISE_RULES,$(EX),student,$(SOLUTION),FORCE))
@@ -116,9 +129,12 @@ endif
 
 exercise: deps
 	@test -n "$(EX)" || { echo "usage: make exercise EX=<one of: $(EXERCISES)> SOLUTION=file.c"; exit 1; }
+	@test -f "exercises/$(EX)/replaces" || { echo "EX=$(EX) is not an exercise (one of: $(EXERCISES))"; exit 1; }
 	@test -n "$(SOLUTION)" || { echo "give SOLUTION=your_file.c (start from exercises/$(EX)/stub.c)"; exit 1; }
 	@test -f "$(SOLUTION)" || { echo "SOLUTION=$(SOLUTION): no such file"; exit 1; }
-	@$(MAKE) --no-print-directory $(call ex_tests,$(EX),student)
+	@$(MAKE) --no-print-directory $(call ex_tests,$(EX),student) || { echo; echo "exercise $(EX): \
+	$(SOLUTION) did not compile or link; \"undefined reference to X\" above means it does not define X \
+	(the functions to write are in exercises/$(EX)/README.md)"; exit 1; }
 	@bash tools/run_tests.sh "exercise $(EX)::$(call ex_tests,$(EX),student)"
 
 # ---- tests -----------------------------------------------------------------
@@ -126,7 +142,8 @@ exercise: deps
 check: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) check-build
 	@bash tools/run_tests.sh $(foreach s,$(STAGES),"stage$(s):build/stage$(s)/mpm:$(TESTS_release_$(s))" "asan-stage$(s):build/asan/stage$(s)/mpm:$(TESTS_asan_$(s))") \
-	    "exercises::$(EXERCISE_CHECKS)"
+	    "exercises::$(EXERCISE_CHECKS)" \
+	    "empty solutions::$(foreach e,$(EXERCISES),$(addprefix ?,$(call ex_tests,$(e),empty)))"
 
 check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) build/asan/stage$(s)/mpm $(TESTS_asan_$(s))) \
              $(EXERCISE_BINS)

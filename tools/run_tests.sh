@@ -1,7 +1,9 @@
 #!/bin/bash
 # Run groups of test programs and print one summary line "N passed, N failed".
 # Each argument is "NAME:MPM_BINARY:PROGRAM PROGRAM ..."; a program written
-# !PROGRAM must fail (an exercise stub shows that its tests can fail).
+# !PROGRAM must fail (an exercise stub shows that its tests can fail);
+# ?PROGRAM is an exercise's test built with an empty solution: it must fail
+# to link (make builds it here) or, if it links, fail.
 set -u
 passed=0
 failed=0
@@ -18,16 +20,30 @@ for group in "$@"; do
     expect_fail=0
     if [[ $prog == !* ]]; then expect_fail=1; prog=${prog#!}; fi
     log="build/test-logs/$(echo "$name-$prog" | tr '/ ' '__').log"
+    if [[ $prog == \?* ]]; then
+      prog=${prog#?}
+      if ! make --no-print-directory -s "$prog" >"$log" 2>&1; then
+        missing=$(grep -Eo "undefined reference to [^ ]*" "$log" | sort -u | tr '\n' ' ')
+        if [ -n "$missing" ]; then
+          passed=$((passed + 1)); echo "  ok    $prog: an empty file does not link (${missing% })"
+        else
+          failed=$((failed + 1)); failures+=("$prog (failed to build, not for a missing definition)")
+          echo "  FAIL  $prog: did not build, and not for a missing definition; log: $log"
+        fi
+        continue
+      fi
+      expect_fail=1
+    fi
     start=$(date +%s)
     MPM_BIN=$bin "$prog" >"$log" 2>&1
     rc=$?
     secs=$(( $(date +%s) - start ))
     if [ $expect_fail = 1 ]; then
       if [ $rc -ne 0 ]; then
-        passed=$((passed + 1)); echo "  ok    $prog fails, as a stub must (${secs}s)"
+        passed=$((passed + 1)); echo "  ok    $prog fails, as a stub (or an empty file) must (${secs}s)"
       else
-        failed=$((failed + 1)); failures+=("$prog (stub passed its tests)")
-        echo "  FAIL  $prog: the stub passes its tests, so they cannot fail"
+        failed=$((failed + 1)); failures+=("$prog (stub or empty file passed its tests)")
+        echo "  FAIL  $prog: a stub or an empty file passes its tests, so they cannot fail"
       fi
       continue
     fi

@@ -11,8 +11,10 @@
 #
 # Each run takes STEPS steps (default 60) with two snapshots; stdout is
 # compared without its timing line, stderr whole (an unstable run's
-# diagnostic must not change either). Prints one line per run and
-# "N passed, N failed"; exits non-zero on any difference.
+# diagnostic must not change either). A scene the base refuses as bad input
+# and this tree runs (a feature the base lacks) is reported as new. Prints
+# one line per run and "N passed, N failed"; exits non-zero on any
+# difference.
 set -u
 cd "$(dirname "$0")/.."
 STEPS=${STEPS:-60}
@@ -46,6 +48,7 @@ fi
 SCENES=$(git ls-files '*.cfg' | grep -v '/bad/' | grep -v '_200k')
 passed=0
 failed=0
+new=0
 for s in $STAGES; do
     [ -x "$A/stage$s/mpm" ] && [ -x "$B/stage$s/mpm" ] || continue
     for scene in $SCENES; do
@@ -67,7 +70,12 @@ for s in $STAGES; do
                 echo "exit $?" >>"$out/stderr"
                 sed -i -e '/particle-steps\/s/d' -e "s#$out#OUT#g" "$out/stdout" "$out/stderr"
             done
-            if diff -r "$WORK/A" "$WORK/B" >"$WORK/diff" 2>&1; then
+            if [ "$(tail -1 "$WORK/A/stderr")" = "exit 1" ] &&
+               [ "$(tail -1 "$WORK/B/stderr")" = "exit 0" ]; then
+                new=$((new + 1))   # input the base refuses: a feature it lacks
+                printf '  new        stage%s %-36s %s (the base refuses: %s)\n' "$s" \
+                    "$scene" "$scheme" "$(head -1 "$WORK/A/stderr")"
+            elif diff -r "$WORK/A" "$WORK/B" >"$WORK/diff" 2>&1; then
                 passed=$((passed + 1))
                 printf '  same       stage%s %-36s %s (%s files)\n' "$s" "$scene" "$scheme" \
                     "$(find "$WORK/B" -type f | wc -l)"
@@ -79,5 +87,5 @@ for s in $STAGES; do
         done
     done
 done
-echo "$passed passed, $failed failed"
+echo "$passed passed, $failed failed ($new runs of scenes the base refuses)"
 [ $failed -eq 0 ] && [ $passed -gt 0 ]
