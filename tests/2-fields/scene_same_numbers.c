@@ -43,6 +43,8 @@ static const SameCase cases[] = {
     {"tools/bench/dcb_nocrack.cfg", "1.0", 1},
     {"tools/bench/disks_50k.cfg", "0.02", 1},
     {"tests/3-crossing/scenes/dcb_kinked.cfg", "6.0", 2},
+    {"tests/3-crossing/scenes/dcb_usf.cfg", "3.0", 2},
+    {"tests/3-crossing/scenes/dcb_usf_half.cfg", "3.0", 1},
 };
 
 /** Scenes of the repository that no earlier stage runs or that another
