@@ -6,7 +6,7 @@
  *        across a grid line under compression, which USF's stress update
  *        turns into more compression at every crossing.
  *
- * What happens (STUDY_USF.md on the branch study-usf has the numbers).  The
+ * What happens (chapter 3, "USF loses a point", has the story).  The
  * lower arm bends, its outer face is compressed (sigma_xx about -1.3e-3 MPa
  * near x = 46) and its outermost row of points slides until point 91, made
  * at (45.75, -17.75), sits on the node (46, -18) (step 1232 at cfl 0.5).
