@@ -4,7 +4,8 @@
 # static state by build/stage3/mpm; sigma_xx along the ligament against a
 # converged static Q4 analysis, read at the node's x, at the same distance
 # from the (moved) tip, and sampled as the MPM samples.  Prints the tables
-# (the study of STUDY_TIP.md) and draws build/figures/fig-tip.png.
+# (the study of chapter 3, "The tip on a node") and draws
+# build/figures/fig-tip.png.
 #
 # About three minutes on one core, mostly the six runs.  The FEA takes
 # h = 0.25 and 0.125 mm (10 s); TIP_FEA_H=0.125 takes h = 0.125 and 0.0625

@@ -45,6 +45,10 @@ static const SameCase cases[] = {
     {"tests/3-crossing/scenes/dcb_kinked.cfg", "6.0", 2},
     {"tests/3-crossing/scenes/dcb_usf.cfg", "3.0", 2},
     {"tests/3-crossing/scenes/dcb_usf_half.cfg", "3.0", 1},
+    {"tests/3-crossing/scenes/tip_node_2mm.cfg", "6.0", 2},
+    {"tests/3-crossing/scenes/tip_mid_51.cfg", "6.0", 2},
+    {"tests/3-crossing/scenes/tip_node_1mm.cfg", "3.0", 2},
+    {"tests/3-crossing/scenes/tip_mid_101.cfg", "3.0", 2},
 };
 
 /** Scenes of the repository that no earlier stage runs or that another
@@ -52,6 +56,8 @@ static const SameCase cases[] = {
 static const char *const elsewhere[][2] = {
     {"tools/bench/disks_200k.cfg", "disks_50k.cfg with four times the points"},
     {"tests/3-crossing/scenes/dcb_arc.cfg", "an arc is stage 3's"},
+    {"tests/3-crossing/scenes/tip_node_05mm.cfg", "tip_node_1mm.cfg refined"},
+    {"tests/3-crossing/scenes/tip_mid_201.cfg", "tip_mid_101.cfg refined"},
 };
 
 static const char *const schemes[] = {"usl", "musl", "usf"};

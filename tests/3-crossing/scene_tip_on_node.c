@@ -23,7 +23,7 @@
  *         positions: exactly how the MPM's own nodal values are made, so
  *         that MPM and (b') differ only by what each method solves.
  *
- * The study (STUDY_TIP.md of branch study-tip, `make fig-tip`) found:
+ * The study (chapter 3, "The tip on a node"; `make fig-tip`) found:
  *  - the tip node's field assignment is not the cause.  With the tip
  *    exactly on node (50, 0) that node is split at the first step (every
  *    point above in one crack field, every point below in the other,
