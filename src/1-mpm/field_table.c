@@ -35,7 +35,8 @@ static int reserve_rows(FieldTable *F, int rows)
         grow((void **)&F->row_key, n * sizeof(unsigned), F->row_cap, cap) ||
         grow((void **)&F->row_slot, n * sizeof(int), F->row_cap, cap) ||
         (F->nx && (grow((void **)&F->row_nx, n * sizeof(double), F->row_cap, cap) ||
-                   grow((void **)&F->row_ny, n * sizeof(double), F->row_cap, cap))))
+                   grow((void **)&F->row_ny, n * sizeof(double), F->row_cap, cap) ||
+                   grow((void **)&F->row_tag, n * sizeof(int), F->row_cap, cap))))
         return -1;
     F->row_cap = cap;
     return 0;
@@ -53,7 +54,8 @@ static int reserve_slots(Grid *g, FieldTable *F, int extra)
         grow((void **)&F->next, sizeof(int), F->extra_cap, cap) ||
         grow((void **)&F->key, sizeof(unsigned), F->extra_cap, cap) ||
         (F->nx && (grow((void **)&F->nx, sizeof(double), F->extra_cap, cap) ||
-                   grow((void **)&F->ny, sizeof(double), F->extra_cap, cap))))
+                   grow((void **)&F->ny, sizeof(double), F->extra_cap, cap) ||
+                   grow((void **)&F->tag, sizeof(int), F->extra_cap, cap))))
         return -1;
     F->extra_cap = cap;
     return 0;
@@ -87,7 +89,9 @@ int fields_want_normals(Sim *sim)
     F->ny = calloc((size_t)F->extra_cap + 1, sizeof(double));
     F->row_nx = calloc((size_t)(n * F->row_cap) + 1, sizeof(double));
     F->row_ny = calloc((size_t)(n * F->row_cap) + 1, sizeof(double));
-    return F->nx && F->ny && F->row_nx && F->row_ny ? 0 : -1;
+    F->tag = calloc((size_t)F->extra_cap + 1, sizeof(int));
+    F->row_tag = calloc((size_t)(n * F->row_cap) + 1, sizeof(int));
+    return F->nx && F->ny && F->row_nx && F->row_ny && F->tag && F->row_tag ? 0 : -1;
 }
 
 void fields_begin_step(Sim *sim)
@@ -117,6 +121,8 @@ int fields_key(Sim *sim, int p, int a, unsigned key)
         if (F->row_nx) {
             memset(&F->row_nx[n * r], 0, (size_t)n * sizeof(double));
             memset(&F->row_ny[n * r], 0, (size_t)n * sizeof(double));
+            for (int k = 0; k < n; k++)
+                F->row_tag[n * r + k] = -1;
         }
     }
     F->row_key[n * r + a] |= key;
@@ -124,14 +130,16 @@ int fields_key(Sim *sim, int p, int a, unsigned key)
 }
 /// [fields_key]
 
-void fields_add_normal(Sim *sim, int p, int a, double nx, double ny)
+void fields_add_normal(Sim *sim, int p, int a, double nx, double ny, int tag)
 {
     FieldTable *F = &sim->fields;
-    int r = F->row_of[p];
+    int r = F->row_of[p], k = STENCIL_NODES * r + a;
     if (!F->row_nx || r < 0)
         return;
-    F->row_nx[STENCIL_NODES * r + a] += nx;
-    F->row_ny[STENCIL_NODES * r + a] += ny;
+    F->row_nx[k] += nx;
+    F->row_ny[k] += ny;
+    if (F->row_tag[k] < 0 || tag < F->row_tag[k])
+        F->row_tag[k] = tag;
 }
 
 /** The slot of @p key at node @p n; created (in key order) when missing. */
@@ -155,8 +163,10 @@ static int node_slot(Sim *sim, int n, unsigned key)
         g->vol[t] = 0.0;
     F->key[e] = key;
     F->next[e] = s;
-    if (F->nx)
+    if (F->nx) {
         F->nx[e] = F->ny[e] = 0.0;
+        F->tag[e] = -1;
+    }
     if (F->first[n] < 0)
         F->touched[F->ntouched++] = n;
     if (prev < 0)
@@ -182,8 +192,11 @@ int fields_resolve(Sim *sim)
                 return step_fail(sim, p, "memory for velocity fields", node[a]);
             F->row_slot[n * r + a] = s;
             if (F->nx && s >= g->nnodes) {
-                F->nx[s - g->nnodes] += F->row_nx[n * r + a];
-                F->ny[s - g->nnodes] += F->row_ny[n * r + a];
+                int e = s - g->nnodes, tag = F->row_tag[n * r + a];
+                F->nx[e] += F->row_nx[n * r + a];
+                F->ny[e] += F->row_ny[n * r + a];
+                if (tag >= 0 && (F->tag[e] < 0 || tag < F->tag[e]))
+                    F->tag[e] = tag;
             }
         }
     }
@@ -219,5 +232,7 @@ void fields_free(FieldTable *F)
     free(F->row_ny);
     free(F->nx);
     free(F->ny);
+    free(F->tag);
+    free(F->row_tag);
     memset(F, 0, sizeof *F);
 }

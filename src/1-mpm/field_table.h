@@ -36,18 +36,20 @@ typedef struct FieldTable {
     int *row_slot;     /**< 4 per row: slot of each pair (after Task 1) */
     double *row_nx;    /**< 4 per row: crack normal sum x (when asked) */
     double *row_ny;    /**< 4 per row: crack normal sum y (when asked) */
+    int *row_tag;      /**< 4 per row: lowest tag of its normals (when asked) */
     int nrows;         /**< rows in use this step */
     int row_cap;       /**< rows allocated */
     double *nx;        /**< per extra slot: normal sum x (when asked) */
     double *ny;        /**< per extra slot: normal sum y (when asked) */
+    int *tag;          /**< per extra slot: lowest tag of its normals, or -1 */
 } FieldTable;
 /// [field_table]
 
 /** @brief Give the scene a field table (idempotent). @return 0 or -1. */
 int fields_enable(struct Sim *sim);
 
-/** @brief Accumulate crack normals per pair and per slot (section 2.2).
- *  @return 0 or -1. */
+/** @brief Accumulate crack normals (and the tag of the crack that gave
+ *         them) per pair and per slot (section 2.2). @return 0 or -1. */
 int fields_want_normals(struct Sim *sim);
 
 /** @brief Task 1 begins: forget the last step's rows and extra slots. */
@@ -59,8 +61,11 @@ void fields_begin_step(struct Sim *sim);
  */
 int fields_key(struct Sim *sim, int p, int a, unsigned key);
 
-/** @brief Add a normal (@p nx, @p ny) to pair (@p p, @p a) (when asked). */
-void fields_add_normal(struct Sim *sim, int p, int a, double nx, double ny);
+/** @brief Add a normal (@p nx, @p ny) to pair (@p p, @p a) (when asked),
+ *         with the @p tag of what gave it (a crack's index, >= 0); a pair
+ *         and a slot keep the lowest tag they were given. */
+void fields_add_normal(struct Sim *sim, int p, int a, double nx, double ny,
+                       int tag);
 
 /**
  * @brief Task 1 ends: give every keyed pair the slot of its key at its

@@ -52,7 +52,7 @@ void mpm_install_stages(Hooks *h)
 #if MPM_STAGE >= 4
     stage4_install(h);
 #else
-    hooks_add_refusal(h, "contact", NULL, "stage 4 (crack contact)");
+    hooks_add_refusal(h, "cracks.contact", NULL, "stage 4 (crack contact)");
 #endif
     hooks_begin_stage(h, 5);
 #if MPM_STAGE >= 5

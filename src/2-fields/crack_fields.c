@@ -36,7 +36,7 @@ int cracks_key_fields(Sim *sim, void *state, Seam seam)
                 double dx = c->x[hit.segment + 1] - c->x[hit.segment];
                 double dy = c->y[hit.segment + 1] - c->y[hit.segment];
                 double len = sqrt(dx * dx + dy * dy);
-                fields_add_normal(sim, p, a, dy / len, -dx / len);
+                fields_add_normal(sim, p, a, dy / len, -dx / len, hit.crack);
             }
         }
     }

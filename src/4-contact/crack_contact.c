@@ -1,0 +1,139 @@
+/**
+ * @file crack_contact.c
+ * @brief Crack-surface contact at the nodes (section 2.2, eq. 8-19): the
+ *        fields of a node on the two sides of a crack, their normal, the
+ *        relative volume, detection, and the momentum change.
+ */
+#include <math.h>
+#include <stdio.h>
+
+#include "contact_law.h"
+#include "crack_contact.h"
+#include "step.h"
+
+int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
+{
+    ContactState *S = state;
+    Cracks *C = cracks_of(sim);
+    const Scene *sc = &sim->scene;
+    C->normals = 1;                          /* Task 1 adds crack normals */
+    if (fields_want_normals(sim) || grid_want(&sim->grid, &sim->grid.vol)) {
+        snprintf(err, errlen, "%s: out of memory for crack contact", sc->file);
+        return -1;
+    }
+    /* eq. 10: the undeformed cell volume, with the thickness of the body
+       the crack lies in (cracks_prepare found one holding a crack point) */
+    for (int k = 0; k < S->ncracks; k++) {
+        const Crack *c = &C->crack[k];
+        double t = 0;
+        for (int j = 0; j < c->n && t == 0; j++)
+            for (int b = 0; b < sc->nbodies && t == 0; b++)
+                if (shape_contains(&sc->bodies[b].shape, c->x[j], c->y[j]))
+                    t = sc->bodies[b].thickness;
+        S->crack[k].vcell = sim->grid.dx * sim->grid.dy * t;
+    }
+    return 0;
+}
+
+/** The unit normal of extra slot @p s (the sum of its pairs' normals,
+ *  above to below) added to (nx, ny). */
+static void add_slot_normal(const Sim *sim, int s, double *nx, double *ny)
+{
+    const FieldTable *F = &sim->fields;
+    int e = s - sim->grid.nnodes;
+    *nx += F->nx[e];
+    *ny += F->ny[e];
+}
+
+/// [contact_pair]
+/** Contact between field @p a (above the crack) and field @p b (below) at
+ *  a node of volume @p vnode, across crack @p tag whose normal is the
+ *  direction of (nx, ny): detect (eq. 10-12), adjust (eq. 13-19). */
+static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
+                         double ny, int tag, double vnode, int *adjusted)
+{
+    Grid *g = &sim->grid;
+    const CrackContact *cc = tag >= 0 && tag < S->ncracks ? &S->crack[tag] : NULL;
+    double len = sqrt(nx * nx + ny * ny);
+    if (!cc || cc->law == CONTACT_NONE || !(len > 0))
+        return;
+    double n[2] = {nx / len, ny / len};
+    double ma = g->m[a], mb = g->m[b];
+    double pa[2] = {g->px[a], g->py[a]}, pb[2] = {g->px[b], g->py[b]};
+    double dvn = (pa[0] / ma - pb[0] / mb) * n[0] + (pa[1] / ma - pb[1] / mb) * n[1];
+    if (!contact_detected(vnode / cc->vcell, cc->vsep, cc->vcontact, dvn))
+        return;
+    double dp[2];
+    if (cc->law == CONTACT_STICK)
+        contact_stick(ma, pa, mb, pb, dp);
+    else
+        contact_friction(ma, pa, mb, pb, n, cc->mu, dp);
+    g->px[a] += dp[0];                       /* momentum exact: b gets -dp */
+    g->py[a] += dp[1];
+    g->px[b] -= dp[0];
+    g->py[b] -= dp[1];
+    /* work of the contact impulse on the adjusted relative velocity: zero
+       for stick and frictionless, the friction's dissipation otherwise */
+    S->work += dp[0] * (g->px[a] / ma - g->px[b] / mb) +
+               dp[1] * (g->py[a] / ma - g->py[b] / mb);
+    *adjusted = 1;
+}
+/// [contact_pair]
+
+/// [crack_contact_task]
+int crack_contact_task(Sim *sim, void *state, Seam seam)
+{
+    ContactState *S = state;
+    const FieldTable *F = &sim->fields;
+    const Grid *g = &sim->grid;
+    const Cracks *C = cracks_of(sim);
+    unsigned side_mask = 3u << C->side_shift;
+    if (seam == SEAM_TASK2_CONTACT)
+        S->nodes = 0;                        /* a new step */
+    S->task_nodes = 0;
+    for (int k = 0; k < F->ntouched; k++) {
+        int n = F->touched[k], f[3] = {-1, -1, -1};
+        double vnode = 0;
+        for (int s = n; s >= 0; s = field_next(F, g, s)) {
+            unsigned key = field_key(F, g, s);
+            vnode += g->vol[s];              /* eq. 8: the node's total volume */
+            if ((key & ~side_mask) == 0 && g->m[s] > 0)
+                f[(key & side_mask) >> C->side_shift] = s;
+        }
+        int adjusted = 0;
+        if (f[0] < 0 && f[1] >= 0 && f[2] >= 0) {     /* both sides crossed */
+            double nx = 0, ny = 0;
+            add_slot_normal(sim, f[1], &nx, &ny);
+            add_slot_normal(sim, f[2], &nx, &ny);
+            int t1 = F->tag[f[1] - g->nnodes], t2 = F->tag[f[2] - g->nnodes];
+            contact_pair(sim, S, f[1], f[2], nx, ny, t1 < t2 ? t1 : t2, vnode,
+                         &adjusted);
+        } else {
+            for (int side = 1; side <= 2; side++) {   /* field 0 against 1, 2 */
+                if (f[0] < 0 || f[side] < 0)
+                    continue;
+                double nx = 0, ny = 0;
+                add_slot_normal(sim, f[side], &nx, &ny);
+                int tag = F->tag[f[side] - g->nnodes];
+                if (side == 1)               /* above the crack: field 1 */
+                    contact_pair(sim, S, f[1], f[0], nx, ny, tag, vnode, &adjusted);
+                else                         /* the node's side is above */
+                    contact_pair(sim, S, f[0], f[2], nx, ny, tag, vnode, &adjusted);
+            }
+        }
+        S->task_nodes += adjusted;
+    }
+    if (S->task_nodes > S->nodes)
+        S->nodes = S->task_nodes;
+    return 0;
+}
+/// [crack_contact_task]
+
+int crack_contact_history(const Sim *sim, void *state, FILE *f, int header)
+{
+    const ContactState *S = state;
+    (void)sim;
+    if (header)
+        return fprintf(f, ",contact_nodes,contact_work") < 0 ? -1 : 0;
+    return fprintf(f, ",%d,%.10g", S->nodes, S->work) < 0 ? -1 : 0;
+}

@@ -1,0 +1,61 @@
+/**
+ * @file crack_contact.h
+ * @brief Crack-surface contact (section 2.2): per-crack settings read from
+ *        the scene, and the adjustment of nodal momenta at Tasks 2, 4 and 6
+ *        wherever the two sides of a crack meet at a node.
+ */
+#ifndef MPM_CRACK_CONTACT_H
+#define MPM_CRACK_CONTACT_H
+
+#include "cracks.h"
+
+/** The contact laws of a crack. */
+typedef enum ContactLawKind {
+    CONTACT_NONE,        /**< the crack has no contact (stage 3's behaviour) */
+    CONTACT_FRICTION,    /**< frictional sliding, mu >= 0 (eq. 14-19) */
+    CONTACT_STICK        /**< stick (eq. 13) */
+} ContactLawKind;
+
+/// [crack_contact_settings]
+/** Contact settings of one crack (scene: cracks.[k].contact). */
+typedef struct CrackContact {
+    ContactLawKind law;  /**< CONTACT_NONE when the crack has no contact */
+    double mu;           /**< coefficient of friction (0: frictionless) */
+    double vsep;         /**< V_sep: below it, separated (default 0.9) */
+    double vcontact;     /**< V_contact: above it, in contact (default 1.1) */
+    double vcell;        /**< undeformed cell volume dx dy t (eq. 10) */
+    int line;            /**< scene-file line of the settings */
+} CrackContact;
+/// [crack_contact_settings]
+
+/** Stage 4's state for crack contact: the settings and the statistics. */
+typedef struct ContactState {
+    int ncracks;          /**< entries of crack */
+    CrackContact *crack;  /**< per crack */
+    int nodes;            /**< most nodes adjusted at one task of this step */
+    int task_nodes;       /**< nodes adjusted at the current task */
+    double work;          /**< work done by contact since the start (mJ) */
+} ContactState;
+
+/** @brief Parse cracks.[index].contact and subscribe stage 4's hooks. */
+int crack_contact_read(Sim *sim, const config_setting_t *s, int index,
+                       struct SceneReader *r);
+
+/** @brief Ask for crack normals and nodal volumes; cell volumes per crack. */
+int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen);
+
+/**
+ * @brief Tasks 2, 4 and 6: at every node where the two sides of a crack
+ *        with contact both have mass, detect contact (eq. 10-12) and
+ *        adjust the momenta (eq. 13-19). Only nodes the field table gave
+ *        extra fields are visited.
+ */
+int crack_contact_task(Sim *sim, void *state, Seam seam);
+
+/** @brief history.csv columns contact_nodes and contact_work. */
+int crack_contact_history(const Sim *sim, void *state, FILE *f, int header);
+
+/** @brief Release stage 4's crack-contact state. */
+void crack_contact_release(void *state);
+
+#endif

@@ -1,0 +1,99 @@
+/**
+ * @file crack_contact_read.c
+ * @brief The scene's per-crack contact settings (cracks.[k].contact) and
+ *        the hooks stage 4 subscribes when a crack has contact.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "crack_contact.h"
+#include "scene_read.h"
+
+/** Stage 4's crack-contact state, made (and subscribed) by the first
+ *  crack that has contact; NULL when out of memory or seams. */
+static ContactState *contact_state(Sim *sim)
+{
+    ContactState *S = sim_state(sim, "crack contact");
+    if (S)
+        return S;
+    S = calloc(1, sizeof *S);
+    if (!S)
+        return NULL;
+    if (sim_attach(sim, "crack contact", S, crack_contact_release)) {
+        free(S);
+        return NULL;
+    }
+    Hooks *h = &sim->hooks;
+    if (hooks_on_prepare(h, crack_contact_prepare, S) ||
+        hooks_on_step(h, SEAM_TASK2_CONTACT, crack_contact_task, S) ||
+        hooks_on_step(h, SEAM_TASK4_CONTACT, crack_contact_task, S) ||
+        hooks_on_step(h, SEAM_TASK6_CONTACT, crack_contact_task, S) ||
+        hooks_on_history(h, crack_contact_history, S))
+        return NULL;
+    return S;
+}
+
+/// [crack_contact_read]
+int crack_contact_read(Sim *sim, const config_setting_t *s, int index,
+                       SceneReader *r)
+{
+    static const char *const keys[] = {"law", "mu", "V_sep", "V_contact", NULL};
+    const char *law = "frictionless";
+    if (config_setting_type(s) != CONFIG_TYPE_GROUP)
+        return scene_error(r, s, "contact", "expected a group { law = "
+                           "\"frictionless\" | \"friction\" | \"stick\"; ... }");
+    ContactState *S = contact_state(sim);
+    if (!S)
+        return scene_error(r, s, "contact", "out of memory");
+    if (index >= S->ncracks) {
+        CrackContact *c = realloc(S->crack, sizeof *c * (size_t)(index + 1));
+        if (!c)
+            return scene_error(r, s, "contact", "out of memory");
+        memset(c + S->ncracks, 0, sizeof *c * (size_t)(index + 1 - S->ncracks));
+        S->crack = c;
+        S->ncracks = index + 1;
+    }
+    CrackContact *c = &S->crack[index];
+    c->line = (int)config_setting_source_line(s);
+    int has_mu;
+    if (scene_check_keys(r, s, keys) || scene_string(r, s, "law", 0, &law) < 0 ||
+        (has_mu = scene_number(r, s, "mu", 0, 0.0, &c->mu)) < 0 ||
+        scene_number(r, s, "V_sep", 0, 0.9, &c->vsep) < 0 ||
+        scene_number(r, s, "V_contact", 0, 1.1, &c->vcontact) < 0)
+        return -1;
+    const config_setting_t *at_mu = config_setting_get_member(s, "mu");
+    if (strcmp(law, "friction") == 0) {
+        if (!has_mu)
+            return scene_error(r, s, "mu", "missing (law \"friction\" needs "
+                               "a coefficient of friction; 0 is frictionless)");
+        if (!(c->mu >= 0))
+            return scene_error(r, at_mu, "mu", "%g must be >= 0", c->mu);
+        c->law = CONTACT_FRICTION;
+    } else if (strcmp(law, "frictionless") == 0 || strcmp(law, "stick") == 0) {
+        if (has_mu)
+            return scene_error(r, at_mu, "mu", "applies to law \"friction\" "
+                               "only (this crack's law is \"%s\")", law);
+        c->law = law[0] == 's' ? CONTACT_STICK : CONTACT_FRICTION;
+    } else {
+        return scene_error(r, config_setting_get_member(s, "law"), "law",
+                           "\"%s\": expected \"frictionless\", \"friction\" "
+                           "or \"stick\"", law);
+    }
+    if (!(c->vsep > 0))
+        return scene_error(r, config_setting_get_member(s, "V_sep"), "V_sep",
+                           "%g must be > 0", c->vsep);
+    if (!(c->vcontact >= c->vsep))
+        return scene_error(r, config_setting_get_member(s, "V_contact") ?
+                           config_setting_get_member(s, "V_contact") : s,
+                           "V_contact", "%g must be >= V_sep (%g)", c->vcontact,
+                           c->vsep);
+    return 0;
+}
+/// [crack_contact_read]
+
+void crack_contact_release(void *state)
+{
+    ContactState *S = state;
+    free(S->crack);
+    free(S);
+}
