@@ -51,6 +51,7 @@ static const SameCase cases[] = {
     {"tests/3-crossing/scenes/tip_node_1mm.cfg", "3.0", 2},
     {"tests/3-crossing/scenes/tip_mid_101.cfg", "3.0", 2},
     {"figures/fig3/cracked_disks.cfg", "2.0", 4},
+    {"tests/4-contact/scenes/dcb_contact_never.cfg", "6.0", 4},
 };
 
 /** Scenes of the repository that no earlier stage runs or that another
