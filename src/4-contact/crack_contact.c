@@ -6,6 +6,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "contact_law.h"
 #include "crack_contact.h"
@@ -17,7 +18,8 @@ int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     Cracks *C = cracks_of(sim);
     const Scene *sc = &sim->scene;
     C->normals = 1;                          /* Task 1 adds crack normals */
-    if (fields_want_normals(sim) || grid_want(&sim->grid, &sim->grid.vol)) {
+    S->vnode = calloc((size_t)sim->grid.nnodes, sizeof(double));
+    if (fields_want_normals(sim) || !S->vnode) {
         snprintf(err, errlen, "%s: out of memory for crack contact", sc->file);
         return -1;
     }
@@ -44,6 +46,34 @@ static void add_slot_normal(const Sim *sim, int s, double *nx, double *ny)
     *nx += F->nx[e];
     *ny += F->ny[e];
 }
+
+/// [node_volumes]
+/** Eq. 8-9 at the nodes that carry extra fields this step (the only ones
+ *  where contact is possible): V_i = sum_p V_p S_ip with the current point
+ *  volume V_p = (1 + e_xx)(1 + e_yy) m_p / rho_p. A point none of whose
+ *  nodes has extra fields costs four integer tests. */
+static void node_volumes(Sim *sim, ContactState *S)
+{
+    const FieldTable *F = &sim->fields;
+    const Particles *P = &sim->pts;
+    for (int k = 0; k < F->ntouched; k++)
+        S->vnode[F->touched[k]] = 0.0;
+    for (int p = 0; p < P->n; p++) {
+        int node[STENCIL_NODES], near = 0;
+        stencil_nodes(sim, p, node);
+        for (int a = 0; a < STENCIL_NODES; a++)
+            near |= F->first[node[a]] >= 0;
+        if (!near)
+            continue;
+        Stencil st;
+        stencil_of_point(sim, p, &st);
+        double v = (1.0 + P->exx[p]) * (1.0 + P->eyy[p]) * P->vol[p];
+        for (int a = 0; a < STENCIL_NODES; a++)
+            if (F->first[node[a]] >= 0)
+                S->vnode[node[a]] += v * st.S[a];
+    }
+}
+/// [node_volumes]
 
 /// [contact_pair]
 /** Contact between field @p a (above the crack) and field @p b (below) at
@@ -88,15 +118,16 @@ int crack_contact_task(Sim *sim, void *state, Seam seam)
     const Grid *g = &sim->grid;
     const Cracks *C = cracks_of(sim);
     unsigned side_mask = 3u << C->side_shift;
-    if (seam == SEAM_TASK2_CONTACT)
-        S->nodes = 0;                        /* a new step */
+    if (seam == SEAM_TASK2_CONTACT) {        /* a new step */
+        S->nodes = 0;
+        node_volumes(sim, S);
+    }
     S->task_nodes = 0;
     for (int k = 0; k < F->ntouched; k++) {
         int n = F->touched[k], f[3] = {-1, -1, -1};
-        double vnode = 0;
+        double vnode = S->vnode[n];          /* eq. 8: the node's total volume */
         for (int s = n; s >= 0; s = field_next(F, g, s)) {
             unsigned key = field_key(F, g, s);
-            vnode += g->vol[s];              /* eq. 8: the node's total volume */
             if ((key & ~side_mask) == 0 && g->m[s] > 0)
                 f[(key & side_mask) >> C->side_shift] = s;
         }

@@ -32,6 +32,7 @@ typedef struct CrackContact {
 typedef struct ContactState {
     int ncracks;          /**< entries of crack */
     CrackContact *crack;  /**< per crack */
+    double *vnode;        /**< per node: volume V_i (eq. 8), at touched nodes */
     int nodes;            /**< most nodes adjusted at one task of this step */
     int task_nodes;       /**< nodes adjusted at the current task */
     double work;          /**< work done by contact since the start (mJ) */
@@ -41,7 +42,8 @@ typedef struct ContactState {
 int crack_contact_read(Sim *sim, const config_setting_t *s, int index,
                        struct SceneReader *r);
 
-/** @brief Ask for crack normals and nodal volumes; cell volumes per crack. */
+/** @brief Ask for crack normals; room for nodal volumes; cell volumes
+ *         per crack. */
 int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen);
 
 /**
