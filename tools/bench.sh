@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # make bench: speed and memory of the stage-1 solver on one thread, what a
-# crack costs (stage 2) and what the crossing step costs by search (stage 3).
+# crack costs (stage 2), what the crossing step costs by search (stage 3)
+# and what crack contact costs (stage 4).
 #
 # Speed: particle-steps per second on the two Sulsky disks refined to about
 # 50,000 and 200,000 points (tools/bench/disks_*.cfg).  Each case runs N
@@ -254,4 +255,40 @@ if [ -x "$S3" ]; then
     done
     printf 'a crack of 100,000 segments (a sine wave): read, checked and indexed in %s s (best of %s; goal about 1 s)\n' \
         "$best" "$REPEAT"
+fi
+
+# ---- stage 4: what crack contact costs ----------------------------------------
+S4=build/stage4/mpm
+if [ -x "$S4" ] && command -v valgrind >/dev/null 2>&1; then
+    echo
+    echo "stage 4: the refined DCB, instructions per particle-step (callgrind, musl,"
+    echo "indexed search): uncracked, cracked, cracked with frictionless contact"
+    read -r pts w1 t < <(bash tools/task1_cost.sh build/stage1/mpm tools/bench/dcb_nocrack.cfg "")
+    read -r pts w4n t < <(bash tools/task1_cost.sh "$S4" tools/bench/dcb_nocrack.cfg "")
+    read -r pts w3 t < <(bash tools/task1_cost.sh build/stage3/mpm tools/bench/dcb_crack.cfg indexed)
+    read -r pts w4 t < <(bash tools/task1_cost.sh "$S4" tools/bench/dcb_crack.cfg indexed)
+    read -r pts w4c t < <(bash tools/task1_cost.sh "$S4" tools/bench/dcb_crack_contact.cfg indexed)
+    printf '  %-40s %6s\n' "stage 1, no crack" "$w1" "stage 4, no crack" "$w4n" \
+        "stage 3, crack" "$w3" "stage 4, crack without contact" "$w4" \
+        "stage 4, crack with contact" "$w4c"
+    printf 'no crack, stage 4 / stage 1: %.3f; crack without contact, stage 4 / stage 3: %.3f\n' \
+        "$(awk -v a="$w1" -v b="$w4n" 'BEGIN { print b / a }')" \
+        "$(awk -v a="$w3" -v b="$w4" 'BEGIN { print b / a }')"
+    printf 'contact overhead: with / without contact %.3f; with contact / no crack %.3f\n' \
+        "$(awk -v a="$w4" -v b="$w4c" 'BEGIN { print b / a }')" \
+        "$(awk -v a="$w1" -v b="$w4c" 'BEGIN { print b / a }')"
+    N=${STEPSDCB:-300}
+    read -r npts dt nx ny < <(MPM=$S4 header tools/bench/dcb_crack.cfg)
+    ratios=()
+    for ((r = 0; r < REPEAT; r++)); do
+        a=$(REPEAT=1 RUN=$S4 steps_time tools/bench/dcb_crack.cfg musl "$N" "$dt")
+        b=$(REPEAT=1 RUN=$S4 steps_time tools/bench/dcb_crack_contact.cfg musl "$N" "$dt")
+        [ "$a" = fail ] || [ "$b" = fail ] && continue
+        ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.4f", b / a }')")
+    done
+    if [ ${#ratios[@]} -gt 0 ]; then
+        printf 'contact overhead in time, refined DCB, %d steps, pair by pair: median %s of %s\n' \
+            "$N" "$(printf '%s\n' "${ratios[@]}" | sort -n | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }')" \
+            "$(echo "${ratios[@]}")"
+    fi
 fi
