@@ -52,6 +52,9 @@ static const SameCase cases[] = {
     {"tests/3-crossing/scenes/tip_mid_101.cfg", "3.0", 2},
     {"figures/fig3/cracked_disks.cfg", "2.0", 4},
     {"tests/4-contact/scenes/dcb_contact_never.cfg", "6.0", 4},
+    {"tests/4-contact/scenes/inclined_crack.cfg", "0.5", 4},
+    {"tests/4-contact/scenes/disks_tips_on_nodes.cfg", "2.0", 4},
+    {"tools/bench/dcb_crack_contact.cfg", "1.0", 4},
 };
 
 /** Scenes of the repository that no earlier stage runs or that another
@@ -61,6 +64,7 @@ static const char *const elsewhere[][2] = {
     {"tests/3-crossing/scenes/dcb_arc.cfg", "an arc is stage 3's"},
     {"tests/3-crossing/scenes/tip_node_05mm.cfg", "tip_node_1mm.cfg refined"},
     {"tests/3-crossing/scenes/tip_mid_201.cfg", "tip_mid_101.cfg refined"},
+    {"tests/4-contact/scenes/inclined_crack_fine.cfg", "inclined_crack.cfg refined"},
 };
 
 static const char *const schemes[] = {"usl", "musl", "usf"};
