@@ -72,6 +72,21 @@ steps_time() {
     echo "$best"
 }
 
+# pair_ratios MPM SCENE_A SCENE_B N DT -> "median list": REPEAT pairs of runs
+# of N steps, each pair both scenes one after the other, the ratio B / A of
+# each pair (neighbours slow both alike), and the median of the ratios
+pair_ratios() {
+    local r a b ratios=()
+    for ((r = 0; r < REPEAT; r++)); do
+        a=$(REPEAT=1 RUN=$1 steps_time "$2" musl "$4" "$5")
+        b=$(REPEAT=1 RUN=$1 steps_time "$3" musl "$4" "$5")
+        [ "$a" = fail ] || [ "$b" = fail ] && continue
+        ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.4f", b / a }')")
+    done
+    [ ${#ratios[@]} -gt 0 ] || return 1
+    echo "$(printf '%s\n' "${ratios[@]}" | sort -n | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }') ${ratios[*]}"
+}
+
 printf 'mpm bench: %s, one thread%s\n' "$MPM" "${PIN:+ ($PIN)}"
 printf 'CPU: %s\n' "$(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo 2>/dev/null)"
 printf 'timing: the time loop of N steps as the program measures it, best of %s runs\n' "$REPEAT"
@@ -217,17 +232,9 @@ if [ -x "$S3" ] && command -v valgrind >/dev/null 2>&1; then
     # the two; the median of the ratios (neighbours slow both alike)
     N=${STEPSDCB:-300}
     read -r npts dt nx ny < <(MPM=$S3 header "$big")
-    ratios=()
-    for ((r = 0; r < REPEAT; r++)); do
-        a=$(REPEAT=1 RUN=$S3 steps_time tools/bench/dcb_nocrack.cfg musl "$N" "$dt")
-        b=$(REPEAT=1 RUN=$S3 steps_time "$big" musl "$N" "$dt")
-        [ "$a" = fail ] || [ "$b" = fail ] && continue
-        ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.4f", b / a }')")
-    done
-    if [ ${#ratios[@]} -gt 0 ]; then
+    if read -r med all < <(pair_ratios "$S3" tools/bench/dcb_nocrack.cfg "$big" "$N" "$dt"); then
         printf 'crack overhead in time, refined DCB, indexed, %d steps, pair by pair: median %s of %s\n' \
-            "$N" "$(printf '%s\n' "${ratios[@]}" | sort -n | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }')" \
-            "$(echo "${ratios[@]}")"
+            "$N" "$med" "$all"
     fi
 fi
 
@@ -279,16 +286,8 @@ if [ -x "$S4" ] && command -v valgrind >/dev/null 2>&1; then
         "$(awk -v a="$w1" -v b="$w4c" 'BEGIN { print b / a }')"
     N=${STEPSDCB:-300}
     read -r npts dt nx ny < <(MPM=$S4 header tools/bench/dcb_crack.cfg)
-    ratios=()
-    for ((r = 0; r < REPEAT; r++)); do
-        a=$(REPEAT=1 RUN=$S4 steps_time tools/bench/dcb_crack.cfg musl "$N" "$dt")
-        b=$(REPEAT=1 RUN=$S4 steps_time tools/bench/dcb_crack_contact.cfg musl "$N" "$dt")
-        [ "$a" = fail ] || [ "$b" = fail ] && continue
-        ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.4f", b / a }')")
-    done
-    if [ ${#ratios[@]} -gt 0 ]; then
+    if read -r med all < <(pair_ratios "$S4" tools/bench/dcb_crack.cfg tools/bench/dcb_crack_contact.cfg "$N" "$dt"); then
         printf 'contact overhead in time, refined DCB, %d steps, pair by pair: median %s of %s\n' \
-            "$N" "$(printf '%s\n' "${ratios[@]}" | sort -n | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }')" \
-            "$(echo "${ratios[@]}")"
+            "$N" "$med" "$all"
     fi
 fi
