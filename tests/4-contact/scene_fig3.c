@@ -15,7 +15,9 @@
  *
  * FIG3_OUT=dir runs the full scene instead and writes what `make fig3`
  * draws: openings.csv (time, both openings, contact nodes, energy) and
- * four snapshots snap_K.csv (x, y, sigma_xx, sigma_yy) with cracks_K.csv.
+ * four snapshots snap_K.csv (x, y, sigma_xx, sigma_yy) with cracks_K.csv,
+ * at 0, 7, 12 and 18 ms (the paper's frames A-D) or at the four times
+ * FIG3_TIMES="t0 t1 t2 t3" gives.
  */
 #include "testkit.h"
 
@@ -112,18 +114,15 @@ static Fig3Run run_fig3(int contact, const char *out, const char *const *overrid
             const Crack *c = &C->crack[k];
             watch_check(&w[k], sim, c->x, c->y, c->n);
             open[k] = watch_opening(&w[k], sim, c->x, c->y, c->n);
-            if (sim->t < 12.0) {          /* the impact and the rebound */
-                if (open[k] > r.open_max[k]) {
-                    r.open_max[k] = open[k];
-                    if (k == 0)
-                        r.right_open_at_left_max = NAN;
-                }
-                if (open[k] < r.open_min[k])
-                    r.open_min[k] = open[k];
+        }
+        if (sim->t < 12.0) {              /* the impact and the rebound */
+            if (open[0] > r.open_max[0])
+                r.right_open_at_left_max = open[1];
+            for (int k = 0; k < 2; k++) {
+                r.open_max[k] = fmax(r.open_max[k], open[k]);
+                r.open_min[k] = fmin(r.open_min[k], open[k]);
             }
         }
-        if (sim->t < 12.0 && open[0] >= r.open_max[0])
-            r.right_open_at_left_max = open[1];
         Totals t = sim_totals(sim);
         double e = t.kinetic + t.strain;
         r.drift = fmax(r.drift, fabs(e - e0) / e0);
