@@ -8,7 +8,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "contact_law.h"
 #include "crack_contact.h"
 #include "step.h"
 
@@ -85,27 +84,12 @@ static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
     Grid *g = &sim->grid;
     const CrackContact *cc = tag >= 0 && tag < S->ncracks ? &S->crack[tag] : NULL;
     double len = sqrt(nx * nx + ny * ny);
-    if (!cc || cc->law == CONTACT_NONE || !(len > 0))
+    if (!cc || cc->law.kind == CONTACT_NONE || !(len > 0))
         return;
     double n[2] = {nx / len, ny / len};
-    double ma = g->m[a], mb = g->m[b];
-    double pa[2] = {g->px[a], g->py[a]}, pb[2] = {g->px[b], g->py[b]};
-    double dvn = (pa[0] / ma - pb[0] / mb) * n[0] + (pa[1] / ma - pb[1] / mb) * n[1];
-    if (!contact_detected(vnode / cc->vcell, cc->vsep, cc->vcontact, dvn))
+    if (!contact_pair_detected(g, a, b, n, vnode / cc->vcell, &cc->law))
         return;
-    double dp[2];
-    if (cc->law == CONTACT_STICK)
-        contact_stick(ma, pa, mb, pb, dp);
-    else
-        contact_friction(ma, pa, mb, pb, n, cc->mu, dp);
-    g->px[a] += dp[0];                       /* momentum exact: b gets -dp */
-    g->py[a] += dp[1];
-    g->px[b] -= dp[0];
-    g->py[b] -= dp[1];
-    /* work of the contact impulse on the adjusted relative velocity: zero
-       for stick and frictionless, the friction's dissipation otherwise */
-    S->work += dp[0] * (g->px[a] / ma - g->px[b] / mb) +
-               dp[1] * (g->py[a] / ma - g->py[b] / mb);
+    S->work += contact_adjust(g, a, b, n, &cc->law);
     *adjusted = 1;
 }
 /// [contact_pair]

@@ -7,22 +7,13 @@
 #ifndef MPM_CRACK_CONTACT_H
 #define MPM_CRACK_CONTACT_H
 
+#include "contact_settings.h"
 #include "cracks.h"
-
-/** The contact laws of a crack. */
-typedef enum ContactLawKind {
-    CONTACT_NONE,        /**< the crack has no contact (stage 3's behaviour) */
-    CONTACT_FRICTION,    /**< frictional sliding, mu >= 0 (eq. 14-19) */
-    CONTACT_STICK        /**< stick (eq. 13) */
-} ContactLawKind;
 
 /// [crack_contact_settings]
 /** Contact settings of one crack (scene: cracks.[k].contact). */
 typedef struct CrackContact {
-    ContactLawKind law;  /**< CONTACT_NONE when the crack has no contact */
-    double mu;           /**< coefficient of friction (0: frictionless) */
-    double vsep;         /**< V_sep: below it, separated (default 0.9) */
-    double vcontact;     /**< V_contact: above it, in contact (default 1.1) */
+    ContactLaw law;      /**< kind CONTACT_NONE: the crack has no contact */
     double vcell;        /**< undeformed cell volume dx dy t (eq. 10) */
     int line;            /**< scene-file line of the settings */
 } CrackContact;

@@ -38,7 +38,6 @@ int crack_contact_read(Sim *sim, const config_setting_t *s, int index,
                        SceneReader *r)
 {
     static const char *const keys[] = {"law", "mu", "V_sep", "V_contact", NULL};
-    const char *law = "frictionless";
     if (config_setting_type(s) != CONFIG_TYPE_GROUP)
         return scene_error(r, s, "contact", "expected a group { law = "
                            "\"frictionless\" | \"friction\" | \"stick\"; ... }");
@@ -55,39 +54,7 @@ int crack_contact_read(Sim *sim, const config_setting_t *s, int index,
     }
     CrackContact *c = &S->crack[index];
     c->line = (int)config_setting_source_line(s);
-    int has_mu;
-    if (scene_check_keys(r, s, keys) || scene_string(r, s, "law", 0, &law) < 0 ||
-        (has_mu = scene_number(r, s, "mu", 0, 0.0, &c->mu)) < 0 ||
-        scene_number(r, s, "V_sep", 0, 0.9, &c->vsep) < 0 ||
-        scene_number(r, s, "V_contact", 0, 1.1, &c->vcontact) < 0)
-        return -1;
-    const config_setting_t *at_mu = config_setting_get_member(s, "mu");
-    if (strcmp(law, "friction") == 0) {
-        if (!has_mu)
-            return scene_error(r, s, "mu", "missing (law \"friction\" needs "
-                               "a coefficient of friction; 0 is frictionless)");
-        if (!(c->mu >= 0))
-            return scene_error(r, at_mu, "mu", "%g must be >= 0", c->mu);
-        c->law = CONTACT_FRICTION;
-    } else if (strcmp(law, "frictionless") == 0 || strcmp(law, "stick") == 0) {
-        if (has_mu)
-            return scene_error(r, at_mu, "mu", "applies to law \"friction\" "
-                               "only (this crack's law is \"%s\")", law);
-        c->law = law[0] == 's' ? CONTACT_STICK : CONTACT_FRICTION;
-    } else {
-        return scene_error(r, config_setting_get_member(s, "law"), "law",
-                           "\"%s\": expected \"frictionless\", \"friction\" "
-                           "or \"stick\"", law);
-    }
-    if (!(c->vsep > 0))
-        return scene_error(r, config_setting_get_member(s, "V_sep"), "V_sep",
-                           "%g must be > 0", c->vsep);
-    if (!(c->vcontact >= c->vsep))
-        return scene_error(r, config_setting_get_member(s, "V_contact") ?
-                           config_setting_get_member(s, "V_contact") : s,
-                           "V_contact", "%g must be >= V_sep (%g)", c->vcontact,
-                           c->vsep);
-    return 0;
+    return scene_check_keys(r, s, keys) || contact_law_read(r, s, 1, &c->law);
 }
 /// [crack_contact_read]
 

@@ -78,8 +78,8 @@ static void run_coulomb(const char *scene, CoulombRun *r)
     ContactState *S = sim_state(sim, "crack contact");
     assert_non_null(C);
     assert_non_null(S);
-    S->crack[0].law = r->law;
-    S->crack[0].mu = r->mu;
+    S->crack[0].law.kind = r->law;
+    S->crack[0].law.mu = r->mu;
     const Crack *c = &C->crack[0];
     /* the crack's direction t, its middle, and the faces' points */
     double tx = c->x[c->n - 1] - c->x[0], ty = c->y[c->n - 1] - c->y[0];

@@ -78,7 +78,7 @@ static Fig3Run run_fig3(int contact, const char *out, const char *const *overrid
     assert_int_equal(C->ncracks, 2);
     if (!contact)
         for (int k = 0; k < S->ncracks; k++)
-            S->crack[k].law = CONTACT_NONE;
+            S->crack[k].law.kind = CONTACT_NONE;
     CrackWatch w[2];
     for (int k = 0; k < 2; k++)          /* crack k lies in body k */
         watch_start(&w[k], sim, k, C->crack[k].x, C->crack[k].y, C->crack[k].n,

@@ -35,8 +35,8 @@ static Sim *halves(ContactLawKind law, double mu, double u, double v)
     Sim *sim = tk_load(scene);
     ContactState *S = sim_state(sim, "crack contact");
     assert_non_null(S);
-    S->crack[0].law = law;
-    S->crack[0].mu = mu;
+    S->crack[0].law.kind = law;
+    S->crack[0].law.mu = mu;
     Particles *P = &sim->pts;
     for (int p = 0; p < P->n; p++) {
         int above = P->y[p] > 6.5;

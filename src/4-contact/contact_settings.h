@@ -1,0 +1,70 @@
+/**
+ * @file contact_settings.h
+ * @brief A contact law as a scene states it (for a crack, or for a pair of
+ *        contact groups), how it is read, and how it changes the momenta
+ *        of two fields at a node: the one adjustment that crack contact and
+ *        contact between bodies share (section 2.2, eq. 13-19).
+ */
+#ifndef MPM_CONTACT_SETTINGS_H
+#define MPM_CONTACT_SETTINGS_H
+
+#include <libconfig.h>
+
+#include "grid.h"
+
+struct SceneReader;
+
+/** The contact laws. */
+typedef enum ContactLawKind {
+    CONTACT_NONE,        /**< no contact: the fields pass (a crack without it) */
+    CONTACT_FRICTION,    /**< frictional sliding, mu >= 0 (eq. 14-19) */
+    CONTACT_STICK,       /**< stick (eq. 13) while in contact */
+    CONTACT_BONDED       /**< always stick, no detection: two groups no pair
+                              names move as one field would */
+} ContactLawKind;
+
+/// [contact_law_settings]
+/** A contact law and its detection settings. */
+typedef struct ContactLaw {
+    ContactLawKind kind; /**< which law */
+    double mu;           /**< coefficient of friction (0: frictionless) */
+    int volume_test;     /**< detect by relative volume (eq. 10-12) too */
+    double vsep;         /**< V_sep: below it, separated (default 0.9) */
+    double vcontact;     /**< V_contact: above it, in contact (default 1.1) */
+} ContactLaw;
+/// [contact_law_settings]
+
+/**
+ * @brief Read a law from group @p s: law = "frictionless" | "friction"
+ *        (with mu >= 0) | "stick"; V_sep, V_contact. The keys of @p s
+ *        are not checked here (the caller knows its other keys).
+ * @param r            the scene reader (messages name file and line)
+ * @param s            the group
+ * @param volume_test  1: the relative-volume test always applies (cracks,
+ *                     defaults 0.9 and 1.1); 0: only when V_sep or
+ *                     V_contact is given
+ * @param out          the law read
+ * @return 0, or -1 with a message in @p r.
+ */
+int contact_law_read(struct SceneReader *r, const config_setting_t *s,
+                     int volume_test, ContactLaw *out);
+
+/**
+ * @brief Change the momenta of fields (slots) @p a and @p b, found in
+ *        contact, by @p law, with @p n the unit normal from a to b; b gets
+ *        exactly minus a's change, so momentum is conserved to round-off.
+ * @return the work of the change on the fields' relative velocity after
+ *         it (zero for stick and frictionless, <= 0 with friction).
+ */
+double contact_adjust(Grid *g, int a, int b, const double n[2],
+                      const ContactLaw *law);
+
+/**
+ * @brief Are fields @p a and @p b in contact? The approach velocity
+ *        (v_a - v_b) . n > 0 and, when the law asks, the relative volume
+ *        @p vrel (eq. 10-12); a bonded pair always is.
+ */
+int contact_pair_detected(const Grid *g, int a, int b, const double n[2],
+                          double vrel, const ContactLaw *law);
+
+#endif
