@@ -53,6 +53,8 @@ void mpm_install_stages(Hooks *h)
     stage4_install(h);
 #else
     hooks_add_refusal(h, "cracks.contact", NULL, "stage 4 (crack contact)");
+    hooks_add_refusal(h, "contact", NULL, "stage 4 (contact between bodies)");
+    hooks_add_refusal(h, "bodies.contact_group", NULL, "stage 4 (contact between bodies)");
 #endif
     hooks_begin_stage(h, 5);
 #if MPM_STAGE >= 5

@@ -49,4 +49,16 @@ void contact_friction(double ma, const double pa[2], double mb,
                       const double pb[2], const double n[2], double mu,
                       double dp[2]);
 
+/**
+ * @brief The unit normal from body a's field to body b's at a node, from
+ *        the mass gradients grad m = sum_p m_p grad S_ip of the two fields:
+ *        the direction of g_a/|g_a| - g_b/|g_b| (either alone when the
+ *        other is zero).
+ * @param ga mass gradient of field a at the node (points out of body a)
+ * @param gb mass gradient of field b (points out of body b)
+ * @param n  out: the unit normal, from a to b
+ * @return 1, or 0 when the gradients give no direction.
+ */
+int contact_interface_normal(const double ga[2], const double gb[2], double n[2]);
+
 #endif

@@ -94,6 +94,35 @@ static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
 }
 /// [contact_pair]
 
+/** Contact across the crack between the fields @p f (sides 0, 1, 2; -1
+ *  when absent) of one body at a node of volume @p vnode. */
+static void crack_contact_fields(Sim *sim, ContactState *S, const int f[3],
+                                 double vnode, int *adjusted)
+{
+    const FieldTable *F = &sim->fields;
+    int nn = sim->grid.nnodes;
+    if (f[0] < 0 && f[1] >= 0 && f[2] >= 0) {     /* both sides crossed */
+        double nx = 0, ny = 0;
+        add_slot_normal(sim, f[1], &nx, &ny);
+        add_slot_normal(sim, f[2], &nx, &ny);
+        int t1 = F->tag[f[1] - nn], t2 = F->tag[f[2] - nn];
+        contact_pair(sim, S, f[1], f[2], nx, ny, t1 < t2 ? t1 : t2, vnode,
+                     adjusted);
+        return;
+    }
+    for (int side = 1; side <= 2; side++) {       /* field 0 against 1, 2 */
+        if (f[0] < 0 || f[side] < 0)
+            continue;
+        double nx = 0, ny = 0;
+        add_slot_normal(sim, f[side], &nx, &ny);
+        int tag = F->tag[f[side] - nn];
+        if (side == 1)                   /* above the crack: field 1 */
+            contact_pair(sim, S, f[1], f[0], nx, ny, tag, vnode, adjusted);
+        else                             /* the node's side is above */
+            contact_pair(sim, S, f[0], f[2], nx, ny, tag, vnode, adjusted);
+    }
+}
+
 /// [crack_contact_task]
 int crack_contact_task(Sim *sim, void *state, Seam seam)
 {
@@ -108,33 +137,18 @@ int crack_contact_task(Sim *sim, void *state, Seam seam)
     }
     S->task_nodes = 0;
     for (int k = 0; k < F->ntouched; k++) {
-        int n = F->touched[k], f[3] = {-1, -1, -1};
+        int n = F->touched[k], adjusted = 0;
         double vnode = S->vnode[n];          /* eq. 8: the node's total volume */
-        for (int s = n; s >= 0; s = field_next(F, g, s)) {
-            unsigned key = field_key(F, g, s);
-            if ((key & ~side_mask) == 0 && g->m[s] > 0)
-                f[(key & side_mask) >> C->side_shift] = s;
-        }
-        int adjusted = 0;
-        if (f[0] < 0 && f[1] >= 0 && f[2] >= 0) {     /* both sides crossed */
-            double nx = 0, ny = 0;
-            add_slot_normal(sim, f[1], &nx, &ny);
-            add_slot_normal(sim, f[2], &nx, &ny);
-            int t1 = F->tag[f[1] - g->nnodes], t2 = F->tag[f[2] - g->nnodes];
-            contact_pair(sim, S, f[1], f[2], nx, ny, t1 < t2 ? t1 : t2, vnode,
-                         &adjusted);
-        } else {
-            for (int side = 1; side <= 2; side++) {   /* field 0 against 1, 2 */
-                if (f[0] < 0 || f[side] < 0)
-                    continue;
-                double nx = 0, ny = 0;
-                add_slot_normal(sim, f[side], &nx, &ny);
-                int tag = F->tag[f[side] - g->nnodes];
-                if (side == 1)               /* above the crack: field 1 */
-                    contact_pair(sim, S, f[1], f[0], nx, ny, tag, vnode, &adjusted);
-                else                         /* the node's side is above */
-                    contact_pair(sim, S, f[0], f[2], nx, ny, tag, vnode, &adjusted);
-            }
+        /* a node's slots are sorted by key: those of one body (the key's
+           bits beyond the crack side) come together, sides 0, 1, 2 */
+        for (int s = n; s >= 0;) {
+            unsigned body = field_key(F, g, s) & ~side_mask;
+            int f[3] = {-1, -1, -1};
+            for (; s >= 0 && (field_key(F, g, s) & ~side_mask) == body;
+                 s = field_next(F, g, s))
+                if (g->m[s] > 0)
+                    f[(field_key(F, g, s) & side_mask) >> C->side_shift] = s;
+            crack_contact_fields(sim, S, f, vnode, &adjusted);
         }
         S->task_nodes += adjusted;
     }

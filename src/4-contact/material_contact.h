@@ -1,0 +1,96 @@
+/**
+ * @file material_contact.h
+ * @brief Contact between bodies (Bardenhagen et al., CMES 2001, as the
+ *        paper's Fig. 4 uses it): each contact group gets its own velocity
+ *        field at the nodes where groups meet, and a contact law adjusts
+ *        the momenta of two groups' fields there at Tasks 2, 4 and 6.
+ *
+ * A body's contact group is its material's name, or the name its
+ * contact_group key gives. The scene's "contact" section lists pairs of
+ * groups with a law; only the groups it names get fields of their own.
+ * Groups no pair names share field 0, and two groups that meet with no
+ * pair between them are bonded: they move as one field would.
+ */
+#ifndef MPM_MATERIAL_CONTACT_H
+#define MPM_MATERIAL_CONTACT_H
+
+#include <stdio.h>
+
+#include "contact_settings.h"
+#include "sim.h"
+
+struct SceneReader;
+
+/** Most contact groups a scene may name in its pairs (the group's part of
+ *  the field key is 5 bits; group 0 is every group no pair names). */
+#define CONTACT_GROUPS_MAX 31
+
+/// [material_contact_state]
+/** Stage 4's state for contact between bodies. */
+typedef struct MaterialContact {
+    int ngroups;          /**< groups named by pairs: indices 1 .. ngroups */
+    char (*name)[64];     /**< per group index (0: "the others") */
+    char (*body_group)[64]; /**< per body: its contact_group, "" for none */
+    int nbody_group;      /**< entries of body_group */
+    int *group_of_body;   /**< per body: its group index (0: no pair) */
+    ContactLaw *law;      /**< (ngroups + 1)^2: law of groups i, j */
+    int shift;            /**< the group's lowest bit in the field key */
+    unsigned group_mask;  /**< the group's bits, shifted down */
+    unsigned side_mask;   /**< the crack side's bits of the key (0: none) */
+    unsigned *seen;       /**< per node: bit g set when group g reaches it */
+    double *gx;           /**< per slot: mass gradient x (at nodes with
+                               several fields) */
+    double *gy;           /**< per slot: mass gradient y */
+    double *area;         /**< per node: sum_p A_p S_ip, the points' current
+                               areas (volume / thickness) */
+    int cap;              /**< slots of gx, gy */
+    int nodes;            /**< most nodes adjusted at one task of this step */
+    int task_nodes;       /**< nodes adjusted at the current task */
+    double work;          /**< work done by material contact (mJ) */
+} MaterialContact;
+/// [material_contact_state]
+
+/** @brief Read bodies.[index].contact_group (a name). */
+int material_group_read(Sim *sim, const config_setting_t *s, int index,
+                        struct SceneReader *r);
+
+/** @brief Read the "contact" section (pairs of groups and their laws) and
+ *         subscribe stage 4's material-contact hooks. */
+int material_contact_read(Sim *sim, const config_setting_t *s, int index,
+                          struct SceneReader *r);
+
+/** @brief The law between groups @p i and @p j. */
+static inline const ContactLaw *material_law(const MaterialContact *M, int i,
+                                             int j)
+{
+    return &M->law[i * (M->ngroups + 1) + j];
+}
+
+/** @brief Set-up: the field table, per-node arrays, the crack side's
+ *         bits. */
+int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen);
+
+/**
+ * @brief Task 1: at every node that points of more than one group reach,
+ *        key each pair with its point's group, so that each group
+ *        extrapolates to its own field there (inside its crack field when
+ *        a crack is there too). A node one group reaches keeps one field.
+ */
+int material_key_fields(Sim *sim, void *state, Seam seam);
+
+/**
+ * @brief Tasks 2, 4 and 6: at every node where two groups' fields (on the
+ *        same side of any crack) have mass, find the normal from their
+ *        mass gradients, detect contact and adjust their momenta by the
+ *        pair's law.
+ */
+int material_contact_task(Sim *sim, void *state, Seam seam);
+
+/** @brief history.csv columns material_contact_nodes and
+ *         material_contact_work. */
+int material_contact_history(const Sim *sim, void *state, FILE *f, int header);
+
+/** @brief Release the state. */
+void material_contact_release(void *state);
+
+#endif
