@@ -56,40 +56,59 @@ void grid_momentum_update(Sim *sim)
 }
 /// [grid_momentum_update]
 
+/** After contact at slot @p s: fixed directions, v = p / m, and at Task 4
+ *  the force f += (p_new - p_old)/dt and a = f / m. */
+static void contact_rederive(Grid *g, int s, int task4, double idt)
+{
+    unsigned fix = g->fixed[grid_slot_node(g, s)];
+    double m = g->m[s];
+    if (task4) {                                  /* f = (p_new - p_old)/dt */
+        g->fx[s] += (g->px[s] - g->qx[s]) * idt;
+        g->fy[s] += (g->py[s] - g->qy[s]) * idt;
+    }
+    if (fix & GRID_FIX_X)
+        g->px[s] = g->fx[s] = 0.0;
+    if (fix & GRID_FIX_Y)
+        g->py[s] = g->fy[s] = 0.0;
+    g->vx[s] = m > 0.0 ? g->px[s] / m : 0.0;
+    g->vy[s] = m > 0.0 ? g->py[s] / m : 0.0;
+    if (task4) {
+        g->ax[s] = m > 0.0 ? g->fx[s] / m : 0.0;
+        g->ay[s] = m > 0.0 ? g->fy[s] / m : 0.0;
+    }
+}
+
 /// [grid_contact]
 int grid_contact(Sim *sim, Seam seam)
 {
     if (sim->hooks.seam[seam].n == 0)
         return 0;                                 /* no contact: nothing */
     Grid *g = &sim->grid;
+    const FieldTable *F = &sim->fields;
     int task4 = seam == SEAM_TASK4_CONTACT;
-    size_t bytes = (size_t)g->nslots * sizeof(double);
-    if (task4) {                                  /* p before contact */
-        memcpy(g->qx, g->px, bytes);
-        memcpy(g->qy, g->py, bytes);
-    }
-    int rc = hooks_run_step(sim, seam);
-    if (rc)
-        return rc;
     double idt = 1.0 / sim->dt;
-    for (int s = 0; s < g->nslots; s++) {
-        unsigned fix = g->fixed[grid_slot_node(g, s)];
-        double m = g->m[s];
-        if (task4) {                              /* f = (p_new - p_old)/dt */
-            g->fx[s] += (g->px[s] - g->qx[s]) * idt;
-            g->fy[s] += (g->py[s] - g->qy[s]) * idt;
+    if (!F->first) {                              /* one field: any slot */
+        size_t bytes = (size_t)g->nslots * sizeof(double);
+        if (task4) {                              /* p before contact */
+            memcpy(g->qx, g->px, bytes);
+            memcpy(g->qy, g->py, bytes);
         }
-        if (fix & GRID_FIX_X)
-            g->px[s] = g->fx[s] = 0.0;
-        if (fix & GRID_FIX_Y)
-            g->py[s] = g->fy[s] = 0.0;
-        g->vx[s] = m > 0.0 ? g->px[s] / m : 0.0;
-        g->vy[s] = m > 0.0 ? g->py[s] / m : 0.0;
-        if (task4) {
-            g->ax[s] = m > 0.0 ? g->fx[s] / m : 0.0;
-            g->ay[s] = m > 0.0 ? g->fy[s] / m : 0.0;
-        }
+        int rc = hooks_run_step(sim, seam);
+        for (int s = 0; s < g->nslots && !rc; s++)
+            contact_rederive(g, s, task4, idt);
+        return rc;
     }
-    return 0;
+    /* with a field table, contact changes the fields of the nodes that
+       have several (the touched nodes); the rest need nothing derived */
+    for (int k = 0; k < F->ntouched && task4; k++)
+        for (int s = F->touched[k]; s >= 0; s = field_next(F, g, s)) {
+            g->qx[s] = g->px[s];
+            g->qy[s] = g->py[s];
+        }
+    int rc = hooks_run_step(sim, seam);
+    for (int k = 0; k < F->ntouched && !rc; k++)
+        for (int s = F->touched[k]; s >= 0; s = field_next(F, g, s))
+            contact_rederive(g, s, task4, idt);
+    return rc;
 }
 /// [grid_contact]

@@ -37,9 +37,11 @@ void grid_momentum_update(Sim *sim);
 
 /**
  * @brief The contact contract: run the subscribers of contact seam @p seam
- *        (Task 2, 4 or 6), which change nodal momenta only, then derive
- *        again what later tasks read: fixed directions, v = p / m, and at
- *        Task 4 the force f += (p - p_before) / dt and a = f / m.
+ *        (Task 2, 4 or 6), which change nodal momenta only (with a field
+ *        table, only at the nodes it gave several fields: contact is
+ *        between two fields), then derive again what later tasks read
+ *        there: fixed directions, v = p / m, and at Task 4 the force
+ *        f += (p - p_before) / dt and a = f / m.
  * @return 0, or non-zero when a subscriber stopped the run.
  */
 int grid_contact(Sim *sim, Seam seam);

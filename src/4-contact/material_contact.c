@@ -24,9 +24,12 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     M->shift = group ? group->shift : -1;
     M->group_mask = group ? (1u << group->bits) - 1u : 0u;
     M->side_mask = side ? ((1u << side->bits) - 1u) << side->shift : 0u;
-    M->seen = calloc((size_t)nn, sizeof(unsigned));
+    M->cell_groups = calloc((size_t)nn, sizeof(unsigned));
+    M->mixed = calloc((size_t)nn, 1);
+    M->near = calloc((size_t)nn, 1);
     M->area = calloc((size_t)nn, sizeof(double));
-    if (M->shift < 0 || fields_enable(sim) || !M->seen || !M->area) {
+    if (M->shift < 0 || fields_enable(sim) || !M->cell_groups || !M->mixed ||
+        !M->near || !M->area) {
         snprintf(err, errlen, "%s: out of memory (or field-key bits) for "
                  "contact between bodies", sim->scene.file);
         return -1;
@@ -39,26 +42,33 @@ int material_key_fields(Sim *sim, void *state, Seam seam)
 {
     MaterialContact *M = state;
     const Particles *P = &sim->pts;
+    const Grid *g = &sim->grid;
+    int nx = g->nnx;
     (void)seam;
-    memset(M->seen, 0, sizeof(unsigned) * (size_t)sim->grid.nnodes);
-    for (int p = 0; p < P->n; p++) {            /* which groups reach a node */
-        int node[STENCIL_NODES];
-        unsigned bit = 1u << M->group_of_body[P->body[p]];
-        stencil_nodes(sim, p, node);
-        for (int a = 0; a < STENCIL_NODES; a++)
-            M->seen[node[a]] |= bit;
-    }
+    memset(M->cell_groups, 0, sizeof(unsigned) * (size_t)g->nnodes);
+    for (int p = 0; p < P->n; p++)              /* the groups in each cell */
+        M->cell_groups[P->cell[p]] |= 1u << M->group_of_body[P->body[p]];
+    for (int j = 0; j < g->nny; j++)            /* a node: its four cells */
+        for (int i = 0; i < nx; i++) {
+            int n = j * nx + i;
+            unsigned seen = M->cell_groups[n];
+            if (i > 0)
+                seen |= M->cell_groups[n - 1];
+            if (j > 0)
+                seen |= M->cell_groups[n - nx] | (i > 0 ? M->cell_groups[n - nx - 1] : 0u);
+            M->mixed[n] = (seen & (seen - 1)) != 0;  /* more than one group */
+        }
     for (int p = 0; p < P->n; p++) {
         int node[STENCIL_NODES], group = M->group_of_body[P->body[p]];
-        if (group == 0)
-            continue;                           /* field 0 of the node */
+        int c = P->cell[p];
+        if (group == 0 || !(M->mixed[c] | M->mixed[c + 1] | M->mixed[c + nx] |
+                            M->mixed[c + nx + 1]))
+            continue;                           /* field 0, or one group */
         stencil_nodes(sim, p, node);
-        for (int a = 0; a < STENCIL_NODES; a++) {
-            unsigned seen = M->seen[node[a]];
-            if ((seen & (seen - 1)) &&          /* more than one group */
+        for (int a = 0; a < STENCIL_NODES; a++)
+            if (M->mixed[node[a]] &&
                 fields_key(sim, p, a, (unsigned)group << M->shift))
                 return -1;
-        }
     }
     return 0;
 }
@@ -85,30 +95,36 @@ static int reserve_gradients(Sim *sim, MaterialContact *M)
 /// [mass_gradients]
 /** Task 2: at the nodes with several fields, each field's mass gradient
  *  sum_p m_p grad S_ip and the node's area sum_p A_p S_ip (A_p: the
- *  point's current volume over its body's thickness). A point none of
- *  whose nodes has several fields costs four integer tests. */
+ *  point's current volume over its body's thickness). A point in a cell
+ *  none of whose corners has several fields costs one test. */
 static int mass_gradients(Sim *sim, MaterialContact *M)
 {
     const FieldTable *F = &sim->fields;
     const Grid *g = &sim->grid;
     const Particles *P = &sim->pts;
     const Body *bodies = sim->scene.bodies;
+    int nx = g->nnx;
     if (reserve_gradients(sim, M))
         return -1;
-    for (int k = 0; k < F->ntouched; k++) {
+    for (int k = 0; k < F->ntouched; k++) {     /* the cells around them */
         int n = F->touched[k];
         M->area[n] = 0.0;
         for (int s = n; s >= 0; s = field_next(F, g, s))
             M->gx[s] = M->gy[s] = 0.0;
+        M->near[n] = 1;
+        if (n >= 1)
+            M->near[n - 1] = 1;
+        if (n >= nx)
+            M->near[n - nx] = 1;
+        if (n >= nx + 1)
+            M->near[n - nx - 1] = 1;
     }
     for (int p = 0; p < P->n; p++) {
-        int node[STENCIL_NODES], near = 0;
-        stencil_nodes(sim, p, node);
-        for (int a = 0; a < STENCIL_NODES; a++)
-            near |= F->first[node[a]] >= 0;
-        if (!near)
+        if (!M->near[P->cell[p]])
             continue;
+        int node[STENCIL_NODES];
         Stencil st;
+        stencil_nodes(sim, p, node);
         stencil_of_point(sim, p, &st);
         double mp = P->m[p];
         double area = (1.0 + P->exx[p]) * (1.0 + P->eyy[p]) * P->vol[p] /
@@ -119,6 +135,16 @@ static int mass_gradients(Sim *sim, MaterialContact *M)
                 M->gy[st.slot[a]] += mp * st.Gy[a];
                 M->area[node[a]] += area * st.S[a];
             }
+    }
+    for (int k = 0; k < F->ntouched; k++) {     /* clean for the next step */
+        int n = F->touched[k];
+        M->near[n] = 0;
+        if (n >= 1)
+            M->near[n - 1] = 0;
+        if (n >= nx)
+            M->near[n - nx] = 0;
+        if (n >= nx + 1)
+            M->near[n - nx - 1] = 0;
     }
     return 0;
 }

@@ -37,7 +37,10 @@ typedef struct MaterialContact {
     int shift;            /**< the group's lowest bit in the field key */
     unsigned group_mask;  /**< the group's bits, shifted down */
     unsigned side_mask;   /**< the crack side's bits of the key (0: none) */
-    unsigned *seen;       /**< per node: bit g set when group g reaches it */
+    unsigned *cell_groups; /**< per cell (by its lower-left node): bit g
+                               set when a point of group g is in it */
+    unsigned char *mixed; /**< per node: points of several groups reach it */
+    unsigned char *near;  /**< per cell: a corner has several fields */
     double *gx;           /**< per slot: mass gradient x (at nodes with
                                several fields) */
     double *gy;           /**< per slot: mass gradient y */

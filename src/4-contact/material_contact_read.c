@@ -190,7 +190,9 @@ void material_contact_release(void *state)
     free(M->body_group);
     free(M->group_of_body);
     free(M->law);
-    free(M->seen);
+    free(M->cell_groups);
+    free(M->mixed);
+    free(M->near);
     free(M->gx);
     free(M->gy);
     free(M->area);

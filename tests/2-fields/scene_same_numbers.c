@@ -56,6 +56,8 @@ static const SameCase cases[] = {
     {"tests/4-contact/scenes/disks_tips_on_nodes.cfg", "2.0", 4},
     {"tools/bench/dcb_crack_contact.cfg", "1.0", 4},
     {"tests/4-contact/scenes/disks_contact.cfg", "1.0", 4},
+    {"tools/bench/disks_50k_contact.cfg", "0.02", 4},
+    {"tools/bench/disks_50k_touching.cfg", "0.02", 4},
 };
 
 /** Scenes of the repository that no earlier stage runs or that another
