@@ -290,4 +290,15 @@ if [ -x "$S4" ] && command -v valgrind >/dev/null 2>&1; then
         printf 'contact overhead in time, refined DCB, %d steps, pair by pair: median %s of %s\n' \
             "$N" "$med" "$all"
     fi
+    echo
+    echo "stage 4: contact between bodies, the 50k disks, instructions per particle-step"
+    echo "(callgrind, musl): one field; each disk its own group, apart; touching"
+    read -r pts d1 t < <(bash tools/task1_cost.sh build/stage1/mpm tools/bench/disks_50k.cfg "")
+    read -r pts d4 t < <(bash tools/task1_cost.sh "$S4" tools/bench/disks_50k_contact.cfg "")
+    read -r pts d4t t < <(bash tools/task1_cost.sh "$S4" tools/bench/disks_50k_touching.cfg "")
+    printf '  %-40s %6s\n' "stage 1, one field" "$d1" "stage 4, two groups, apart" "$d4" \
+        "stage 4, two groups, touching" "$d4t"
+    printf 'contact groups over one field: apart %.3f, touching %.3f\n' \
+        "$(awk -v a="$d1" -v b="$d4" 'BEGIN { print b / a }')" \
+        "$(awk -v a="$d1" -v b="$d4t" 'BEGIN { print b / a }')"
 fi
