@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # make bench: speed and memory of the stage-1 solver on one thread, what a
 # crack costs (stage 2), what the crossing step costs by search (stage 3)
-# and what crack contact costs (stage 4).
+# and what contact costs (stage 4: crack faces; bodies through contact groups).
 #
 # Speed: particle-steps per second on the two Sulsky disks refined to about
 # 50,000 and 200,000 points (tools/bench/disks_*.cfg).  Each case runs N
