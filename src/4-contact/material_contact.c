@@ -92,6 +92,23 @@ static int reserve_gradients(Sim *sim, MaterialContact *M)
     return 0;
 }
 
+/** Set @p flag in the cells (by lower-left node) of which a touched node
+ *  is a corner. */
+static void mark_cells_around(unsigned char *cells, const FieldTable *F,
+                              int nx, unsigned char flag)
+{
+    for (int k = 0; k < F->ntouched; k++) {
+        int n = F->touched[k];
+        cells[n] = flag;
+        if (n >= 1)
+            cells[n - 1] = flag;
+        if (n >= nx)
+            cells[n - nx] = flag;
+        if (n >= nx + 1)
+            cells[n - nx - 1] = flag;
+    }
+}
+
 /// [mass_gradients]
 /** Task 2: at the nodes with several fields, each field's mass gradient
  *  sum_p m_p grad S_ip and the node's area sum_p A_p S_ip (A_p: the
@@ -106,19 +123,13 @@ static int mass_gradients(Sim *sim, MaterialContact *M)
     int nx = g->nnx;
     if (reserve_gradients(sim, M))
         return -1;
-    for (int k = 0; k < F->ntouched; k++) {     /* the cells around them */
+    for (int k = 0; k < F->ntouched; k++) {     /* the nodes with several fields */
         int n = F->touched[k];
         M->area[n] = 0.0;
         for (int s = n; s >= 0; s = field_next(F, g, s))
             M->gx[s] = M->gy[s] = 0.0;
-        M->near[n] = 1;
-        if (n >= 1)
-            M->near[n - 1] = 1;
-        if (n >= nx)
-            M->near[n - nx] = 1;
-        if (n >= nx + 1)
-            M->near[n - nx - 1] = 1;
     }
+    mark_cells_around(M->near, F, nx, 1);       /* and the cells around them */
     for (int p = 0; p < P->n; p++) {
         if (!M->near[P->cell[p]])
             continue;
@@ -136,16 +147,7 @@ static int mass_gradients(Sim *sim, MaterialContact *M)
                 M->area[node[a]] += area * st.S[a];
             }
     }
-    for (int k = 0; k < F->ntouched; k++) {     /* clean for the next step */
-        int n = F->touched[k];
-        M->near[n] = 0;
-        if (n >= 1)
-            M->near[n - 1] = 0;
-        if (n >= nx)
-            M->near[n - nx] = 0;
-        if (n >= nx + 1)
-            M->near[n - nx - 1] = 0;
-    }
+    mark_cells_around(M->near, F, nx, 0);       /* clean for the next step */
     return 0;
 }
 /// [mass_gradients]
