@@ -216,16 +216,19 @@ static BeamRun run_beam(const char *scene, int extra)
 
 static void print_run(const char *what, const BeamRun *r)
 {
+    char after[32] = "- (in contact at the end)";
+    if (isfinite(r->py_min_after))
+        snprintf(after, sizeof after, "%.4g", r->py_min_after);
     printf("  %s (MUSL, cfl 0.2, to %.3g ms):\n"
            "    contact from %.3f ms (the domains half a cell apart at %.3f ms) to "
            "%.3f ms, most nodes in one step %d, nodes shared at the end %d\n"
-           "    impactor y momentum: least after the last contact %.4g, change over "
+           "    impactor y momentum: least after the last contact %s, change over "
            "the last %.2g ms %.3g of its initial %.4g (g m/s)\n"
            "    impactor kinetic energy %.4g mJ before, %.4g mJ at the end (%.4f); "
            "beam kinetic + strain at the end %.4f of E0\n"
            "    energy drift (max |E - E0|/E0) %.2f %%, contact work %.2e of E0\n",
            what, r->t_end, r->t_start, r->t_half_cell, r->t_last, r->most_nodes,
-           r->shared_end, r->py_min_after, WINDOW, r->dpy_window / r->p0, r->p0,
+           r->shared_end, after, WINDOW, r->dpy_window / r->p0, r->p0,
            r->k0, r->k_end, r->k_end / r->k0, r->beam_end, 100 * r->drift, r->work);
 }
 
