@@ -27,7 +27,7 @@
 typedef struct SameCase {
     const char *scene;
     const char *time;     /* run.time override: a few dozen steps */
-    int stage;            /* 1: uncracked, 2: cracked, 4: crack contact */
+    int stage;            /* 1: uncracked, 2: cracked, 4: contact (cracks, bodies) */
 } SameCase;
 
 static const SameCase cases[] = {
@@ -58,6 +58,7 @@ static const SameCase cases[] = {
     {"tests/4-contact/scenes/disks_contact.cfg", "1.0", 4},
     {"tools/bench/disks_50k_contact.cfg", "0.02", 4},
     {"tools/bench/disks_50k_touching.cfg", "0.02", 4},
+    {"figures/fig5/beam_impact_contact.cfg", "0.01", 4},
 };
 
 /** Scenes of the repository that no earlier stage runs or that another
