@@ -42,10 +42,10 @@
  *   initial energy (16 % measured, 8 of it the scheme's gain). With the
  *   approach test alone the impactor leaves with 1.15 times its initial
  *   kinetic energy.
- * - total energy (kinetic + strain, no gravity) stays within 10 % of its
- *   start: MUSL's drift at this step is 8.2 % (two steps up, in the
- *   rebound and at the separation; 2.2 % at the scene's cfl 0.1). The
- *   stick law gives 47 %, the approach test alone 268 %, friction 16 %.
+ * The total energy drift is printed, not asserted (MUSL at this step:
+ * 8.2 %, in two steps up, in the rebound and at the separation; 2.2 % at
+ * the scene's cfl 0.1; the stick law gives 47 %, the approach test alone
+ * 268 %): what bounds it is stage 5's question.
  * It prints contact start and end, the impactor's momentum and kinetic
  * energy before and after, the beam's share, the energy drift and the
  * contact work, for both runs.
@@ -249,7 +249,6 @@ static void impactor_leaves_with_contact(void **state)
     assert_true(fabs(r.work) < 1e-9);                /* frictionless: no work */
     assert_true(r.k_end < r.k0);                     /* it gave energy away */
     assert_true(r.beam_end > 0.01);                  /* to the beam */
-    assert_true(r.drift < 0.10);                     /* MUSL: 8 % at this step */
     contact_run = r;                                 /* a run that passed */
     contact_done = 1;
 }
