@@ -20,6 +20,9 @@
  * halving the CFL factor (0.1 to 0.05) must halve the gain (ratio in
  * [0.4, 0.6]; at 0.2 to 0.1 it is 0.58, not yet asymptotic).
  *
+ * The same with the pair's volume test (V_sep = 0.9): the same checks,
+ * and the restitution and energy printed.
+ *
  * Bonded: with the pair's law set to "bonded" (what an unlisted pair gets)
  * the run must be the single-field run of chapter 1's scene: the positions
  * of every point agree to 1e-9 mm after the whole collision (the two
@@ -54,12 +57,12 @@ typedef struct DisksRun {
     double t_first, t_last;
 } DisksRun;
 
-static DisksRun collide(const char *scheme, const char *cfl)
+static DisksRun collide(const char *scheme, const char *cfl, const char *extra)
 {
     char ov[2][64];
     snprintf(ov[0], sizeof ov[0], "run.update=%s", scheme);
     snprintf(ov[1], sizeof ov[1], "run.cfl=%s", cfl);
-    const char *const overrides[] = {ov[0], ov[1], NULL};
+    const char *const overrides[] = {ov[0], ov[1], extra, NULL};
     Sim *sim = tk_load_file(SCENE, overrides);
     const MaterialContact *M = sim_state(sim, "material contact");
     assert_non_null(M);
@@ -86,8 +89,9 @@ static DisksRun collide(const char *scheme, const char *cfl)
     r.gain = (tn.kinetic + tn.strain) / E0 - 1;
     r.translation = 0.5 * (vl * vl + vr * vr) / (v0 * v0);   /* of E0 */
     r.kinetic = tn.kinetic / E0;
-    printf("  %-4s cfl %s: contact %.3f to %.3f ms; restitution %.4f; energy %+.2f %%; "
+    printf("  %-4s cfl %s%s%s: contact %.3f to %.3f ms; restitution %.4f; energy %+.2f %%; "
            "momentum %.1e of sum m|v|; contact work %.1e E0\n", scheme, cfl,
+           extra ? ", " : "", extra ? extra : "",
            r.t_first, r.t_last, r.restitution, 100 * r.gain, r.drift, r.work);
     assert_true(r.drift <= 1e-12);
     assert_true(r.work <= 1e-12);
@@ -115,7 +119,7 @@ static double one_field(const char *scheme)
 
 static void frictionless(const char *scheme)
 {
-    DisksRun a = collide(scheme, "0.1"), b = collide(scheme, "0.05");
+    DisksRun a = collide(scheme, "0.1", NULL), b = collide(scheme, "0.05", NULL);
     double ratio = b.gain / a.gain;
     printf("  %-4s energy gain at cfl 0.05 / at cfl 0.1: %.3f (first order: 0.5); "
            "chapter 1's single field: restitution %.4f\n", scheme, ratio,
@@ -124,6 +128,14 @@ static void frictionless(const char *scheme)
 }
 
 static void musl(void **state) { (void)state; frictionless("musl"); }
+
+/** The pair with the volume test (V_sep = 0.9): the disks bounce too; the
+ *  energy and restitution are printed for chapter 4. */
+static void volume_test(void **state)
+{
+    (void)state;
+    collide("musl", "0.1", "contact.[0].V_sep=0.9");
+}
 static void usf(void **state) { (void)state; frictionless("usf"); }
 
 /** A bonded pair is one field: chapter 1's run, to round-off. */
@@ -154,6 +166,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(musl),
         cmocka_unit_test(usf),
+        cmocka_unit_test(volume_test),
         cmocka_unit_test(bonded_is_one_field),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
