@@ -55,6 +55,7 @@ static const SameCase cases[] = {
     {"tests/4-contact/scenes/inclined_crack.cfg", "0.5", 4},
     {"tests/4-contact/scenes/disks_tips_on_nodes.cfg", "2.0", 4},
     {"tools/bench/dcb_crack_contact.cfg", "1.0", 4},
+    {"figures/fig4/five_disks.cfg", "0.002", 4},
 };
 
 /** Scenes of the repository that no earlier stage runs or that another
