@@ -18,7 +18,8 @@ int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     const Scene *sc = &sim->scene;
     C->normals = 1;                          /* Task 1 adds crack normals */
     S->vnode = calloc((size_t)sim->grid.nnodes, sizeof(double));
-    if (fields_want_normals(sim) || !S->vnode) {
+    S->held = calloc((size_t)sim->grid.nnodes, sizeof(unsigned));
+    if (fields_want_normals(sim) || !S->vnode || !S->held) {
         snprintf(err, errlen, "%s: out of memory for crack contact", sc->file);
         return -1;
     }
@@ -87,8 +88,16 @@ static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
     if (!cc || cc->law.kind == CONTACT_NONE || !(len > 0))
         return;
     double n[2] = {nx / len, ny / len};
-    if (!contact_pair_detected(g, a, b, n, vnode / cc->vcell, &cc->law))
+    unsigned bit = S->pair < 32 ? 1u << S->pair : 0u;
+    S->pair++;
+    if (S->seam == SEAM_TASK6_CONTACT) {     /* the step's decision */
+        if (!(S->held[S->node] & bit))
+            return;
+    } else if (!contact_pair_detected(g, a, b, n, vnode / cc->vcell, &cc->law)) {
         return;
+    } else if (S->seam == SEAM_TASK4_CONTACT) {
+        S->held[S->node] |= bit;
+    }
     S->work += contact_adjust(g, a, b, n, &cc->law);
     *adjusted = 1;
 }
@@ -139,6 +148,11 @@ int crack_contact_task(Sim *sim, void *state, Seam seam)
     for (int k = 0; k < F->ntouched; k++) {
         int n = F->touched[k], adjusted = 0;
         double vnode = S->vnode[n];          /* eq. 8: the node's total volume */
+        S->seam = seam;
+        S->node = n;
+        S->pair = 0;
+        if (seam == SEAM_TASK4_CONTACT)
+            S->held[n] = 0;
         /* a node's slots are sorted by key: those of one body (the key's
            bits beyond the crack side) come together, sides 0, 1, 2 */
         for (int s = n; s >= 0;) {

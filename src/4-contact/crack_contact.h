@@ -24,6 +24,12 @@ typedef struct ContactState {
     int ncracks;          /**< entries of crack */
     CrackContact *crack;  /**< per crack */
     double *vnode;        /**< per node: volume V_i (eq. 8), at touched nodes */
+    unsigned *held;       /**< per node: bit k set when its k-th pair of
+                               fields was in contact at Task 4 (Task 6
+                               keeps that decision) */
+    Seam seam;            /**< the task being done */
+    int node;             /**< the node being visited */
+    int pair;             /**< pairs of fields met at that node so far */
     int nodes;            /**< most nodes adjusted at one task of this step */
     int task_nodes;       /**< nodes adjusted at the current task */
     double work;          /**< work done by contact since the start (mJ) */

@@ -63,5 +63,6 @@ void crack_contact_release(void *state)
     ContactState *S = state;
     free(S->crack);
     free(S->vnode);
+    free(S->held);
     free(S);
 }

@@ -28,8 +28,9 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     M->mixed = calloc((size_t)nn, 1);
     M->near = calloc((size_t)nn, 1);
     M->area = calloc((size_t)nn, sizeof(double));
+    M->held = calloc((size_t)nn, sizeof(unsigned));
     if (M->shift < 0 || fields_enable(sim) || !M->cell_groups || !M->mixed ||
-        !M->near || !M->area) {
+        !M->near || !M->area || !M->held) {
         snprintf(err, errlen, "%s: out of memory (or field-key bits) for "
                  "contact between bodies", sim->scene.file);
         return -1;
@@ -167,8 +168,10 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
     M->task_nodes = 0;
     double cell = g->dx * g->dy;
     for (int k = 0; k < F->ntouched; k++) {
-        int n = F->touched[k], adjusted = 0;
+        int n = F->touched[k], adjusted = 0, pair = 0;
         double vrel = M->area[n] / cell;        /* eq. 10, per unit thickness */
+        if (seam == SEAM_TASK4_CONTACT)
+            M->held[n] = 0;
         for (int a = n; a >= 0; a = field_next(F, g, a)) {
             unsigned ka = field_key(F, g, a);
             for (int b = field_next(F, g, a); b >= 0 && g->m[a] > 0;
@@ -178,14 +181,22 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
                 int gb = (int)((kb >> M->shift) & gmask);
                 if (g->m[b] <= 0 || ga == gb || (ka & M->side_mask) != (kb & M->side_mask))
                     continue;                   /* same body, or across a crack */
+                unsigned bit = pair < 32 ? 1u << pair : 0u;
+                pair++;
                 const ContactLaw *law = material_law(M, ga, gb);
                 double nrm[2] = {0.0, 0.0};
                 double grad_a[2] = {M->gx[a], M->gy[a]}, grad_b[2] = {M->gx[b], M->gy[b]};
                 if (law->kind != CONTACT_BONDED &&
                     !contact_interface_normal(grad_a, grad_b, nrm))
                     continue;
-                if (!contact_pair_detected(g, a, b, nrm, vrel, law))
+                if (seam == SEAM_TASK6_CONTACT) {   /* the step's decision */
+                    if (!(M->held[n] & bit))
+                        continue;
+                } else if (!contact_pair_detected(g, a, b, nrm, vrel, law)) {
                     continue;
+                } else if (seam == SEAM_TASK4_CONTACT) {
+                    M->held[n] |= bit;
+                }
                 M->work += contact_adjust(g, a, b, nrm, law);
                 adjusted |= law->kind != CONTACT_BONDED;
             }

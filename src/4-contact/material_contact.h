@@ -46,6 +46,9 @@ typedef struct MaterialContact {
     double *gy;           /**< per slot: mass gradient y */
     double *area;         /**< per node: sum_p A_p S_ip, the points' current
                                areas (volume / thickness) */
+    unsigned *held;       /**< per node: bit k set when its k-th pair of
+                               fields was in contact at Task 4 (Task 6
+                               keeps that decision) */
     int cap;              /**< slots of gx, gy */
     int nodes;            /**< most nodes adjusted at one task of this step */
     int task_nodes;       /**< nodes adjusted at the current task */

@@ -186,6 +186,7 @@ int material_contact_read(Sim *sim, const config_setting_t *s, int index,
 void material_contact_release(void *state)
 {
     MaterialContact *M = state;
+    free(M->held);
     free(M->name);
     free(M->body_group);
     free(M->group_of_body);

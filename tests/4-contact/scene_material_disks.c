@@ -15,10 +15,16 @@
  * restitution and the energy drift are printed, beside chapter 1's
  * single-field rebound of the same disks.
  *
- * The total energy grows while the disks touch (a few per cent): the test
- * asserts that this is a time-integration error, of first order in dt:
- * halving the CFL factor (0.1 to 0.05) must halve the gain (ratio in
+ * USF: the total energy grows while the disks touch (a few per cent): the
+ * test asserts that this is a time-integration error, of first order in
+ * dt: halving the CFL factor (0.1 to 0.05) must halve the gain (ratio in
  * [0.4, 0.6]; at 0.2 to 0.1 it is 0.58, not yet asymptotic).
+ *
+ * MUSL: Task 6 keeps the contact decisions of Task 4 (a pair released at
+ * Task 6 after its Task-4 impulse reached the points gained energy, +4.3 %
+ * at cfl 0.1 before that rule); the test asserts that MUSL's energy now
+ * falls at both steps (the scheme's own dissipation and the inelastic
+ * meeting of two fields at a node) and falls less at the smaller step.
  *
  * The same with the pair's volume test (V_sep = 0.9): the same checks,
  * and the restitution and energy printed.
@@ -117,17 +123,24 @@ static double one_field(const char *scheme)
     return e;
 }
 
-static void frictionless(const char *scheme)
+/** Runs at cfl 0.1 and 0.05; @p first_order: the gain must halve with
+ *  the step, else the energy must fall at both, less at the smaller. */
+static void frictionless(const char *scheme, int first_order)
 {
     DisksRun a = collide(scheme, "0.1", NULL), b = collide(scheme, "0.05", NULL);
     double ratio = b.gain / a.gain;
     printf("  %-4s energy gain at cfl 0.05 / at cfl 0.1: %.3f (first order: 0.5); "
            "chapter 1's single field: restitution %.4f\n", scheme, ratio,
            one_field(scheme));
-    assert_true(ratio >= 0.4 && ratio <= 0.6);
+    if (first_order) {
+        assert_true(ratio >= 0.4 && ratio <= 0.6);
+    } else {
+        assert_true(a.gain < 0 && b.gain < 0);
+        assert_true(b.gain > a.gain);
+    }
 }
 
-static void musl(void **state) { (void)state; frictionless("musl"); }
+static void musl(void **state) { (void)state; frictionless("musl", 0); }
 
 /** The pair with the volume test (V_sep = 0.9): the disks bounce too; the
  *  energy and restitution are printed for chapter 4. */
@@ -136,7 +149,7 @@ static void volume_test(void **state)
     (void)state;
     collide("musl", "0.1", "contact.[0].V_sep=0.9");
 }
-static void usf(void **state) { (void)state; frictionless("usf"); }
+static void usf(void **state) { (void)state; frictionless("usf", 1); }
 
 /** A bonded pair is one field: chapter 1's run, to round-off. */
 static void bonded_is_one_field(void **state)
