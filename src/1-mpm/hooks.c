@@ -169,6 +169,21 @@ int hooks_on_history(Hooks *h, HistoryHook fn, void *state)
     return subscribe(&h->seam[SEAM_HISTORY], s);
 }
 
+int hooks_on_report(Hooks *h, ReportHook fn, void *state)
+{
+    Subscriber s = {.fn.report = fn, .state = state, .rank = h->rank};
+    return subscribe(&h->seam[SEAM_REPORT], s);
+}
+
+int hooks_run_report(const Sim *sim, FILE *f)
+{
+    const SeamList *l = &sim->hooks.seam[SEAM_REPORT];
+    int rc = 0;
+    for (int k = 0; k < l->n; k++)
+        rc |= l->at[k].fn.report(sim, l->at[k].state, f);
+    return rc ? -1 : 0;
+}
+
 int hooks_run_step(Sim *sim, Seam seam)
 {
     const SeamList *l = &sim->hooks.seam[seam];

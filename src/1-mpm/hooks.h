@@ -40,6 +40,7 @@ typedef enum Seam {
     SEAM_TASK7,          /**< Task 7: move cracks, end-of-step work */
     SEAM_SNAPSHOT,       /**< write extra files with each snapshot */
     SEAM_HISTORY,        /**< write extra columns of history.csv */
+    SEAM_REPORT,         /**< end of a run: print a summary (stdout) */
     SEAM_COUNT           /**< number of seams */
 } Seam;
 
@@ -54,6 +55,8 @@ typedef int (*SnapshotHook)(const struct Sim *sim, void *state,
 /** A history subscriber: write ",name..." (header) or ",value..."; 0 or -1. */
 typedef int (*HistoryHook)(const struct Sim *sim, void *state, FILE *f,
                            int header);
+/** A report subscriber: print lines about the finished run to @p f; 0 or -1. */
+typedef int (*ReportHook)(const struct Sim *sim, void *state, FILE *f);
 
 /** One subscriber: its function (of the seam's type) and its own state. */
 typedef struct Subscriber {
@@ -62,6 +65,7 @@ typedef struct Subscriber {
         PrepareHook prepare;   /**< SEAM_PREPARE */
         SnapshotHook snapshot; /**< SEAM_SNAPSHOT */
         HistoryHook history;   /**< SEAM_HISTORY */
+        ReportHook report;     /**< SEAM_REPORT */
     } fn;                      /**< the function */
     void *state;               /**< passed back to it */
     int rank;                  /**< stage order of its installer */
@@ -194,6 +198,13 @@ int hooks_on_snapshot(Hooks *h, SnapshotHook fn, void *state);
 
 /** @brief Subscribe to SEAM_HISTORY. @return 0 or -1. */
 int hooks_on_history(Hooks *h, HistoryHook fn, void *state);
+
+/** @brief Subscribe to SEAM_REPORT. @return 0 or -1. */
+int hooks_on_report(Hooks *h, ReportHook fn, void *state);
+
+/** @brief Print the end-of-run lines of every SEAM_REPORT subscriber to
+ *         @p f. @return 0, or -1 when a write failed. */
+int hooks_run_report(const struct Sim *sim, FILE *f);
 
 /** @brief Run the subscribers of step seam @p seam in order; stop at the
  *         first that fails. @return 0 or its non-zero value. */

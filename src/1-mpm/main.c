@@ -91,6 +91,8 @@ int main(int argc, char **argv)
            sim->scene.run.scheme->name);
     fflush(stdout);
     int rc = sim_run(sim, outdir, !quiet);
+    if ((rc == 0 || rc == 3) && hooks_run_report(sim, stdout))
+        rc = rc ? rc : 2;
     if (rc == 0)
         printf("mpm: done, output in %s (%ld steps in %.3f s, %.3g particle-steps/s)\n",
                outdir, sim->step, sim->loop_seconds,

@@ -1,0 +1,148 @@
+/**
+ * @file energy_balance.c
+ * @brief Energy in = energy stored + dissipated + error, per run.
+ */
+#include "energy_balance.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "crack_contact.h"
+#include "material_contact.h"
+
+static void energy_balance_release(void *state)
+{
+    EnergyBalance *B = state;
+    free(B->vx);
+    free(B->vy);
+    free(B);
+}
+
+/// [energy_balance_prepare]
+int energy_balance_prepare(Sim *sim, void *state, char *err, size_t errlen)
+{
+    (void)state;
+    const Scene *sc = &sim->scene;
+    EnergyBalance *B = calloc(1, sizeof *B);
+    if (!B || sim_attach(sim, "energy balance", B, energy_balance_release)) {
+        free(B);
+        snprintf(err, errlen, "%s: out of memory (energy balance)", sc->file);
+        return -1;
+    }
+    Totals t = sim_totals(sim);
+    B->e0 = t.kinetic + t.strain;
+    int n = sim->pts.n;
+    int per_step = sc->run.gx != 0.0 || sc->run.gy != 0.0 || sc->nloads > 0;
+    if (sc->run.damping > 0.0 &&                 /* the Task-4 seam needs q */
+        (grid_want(&sim->grid, &sim->grid.qx) || grid_want(&sim->grid, &sim->grid.qy) ||
+         hooks_on_step(&sim->hooks, SEAM_TASK4_CONTACT, energy_balance_damping, B))) {
+        snprintf(err, errlen, "%s: too many step hooks", sc->file);
+        return -1;
+    }
+    if (per_step) {
+        B->vx = malloc((size_t)(n > 0 ? n : 1) * sizeof(double));
+        B->vy = malloc((size_t)(n > 0 ? n : 1) * sizeof(double));
+        if (!B->vx || !B->vy ||
+            hooks_on_step(&sim->hooks, SEAM_TASK7, energy_balance_step, B)) {
+            snprintf(err, errlen, "%s: out of memory (energy balance)", sc->file);
+            return -1;
+        }
+        memcpy(B->vx, sim->pts.vx, (size_t)n * sizeof(double));
+        memcpy(B->vy, sim->pts.vy, (size_t)n * sizeof(double));
+    }
+    if (hooks_on_report(&sim->hooks, energy_balance_report, B)) {
+        snprintf(err, errlen, "%s: too many report hooks", sc->file);
+        return -1;
+    }
+    return 0;
+}
+/// [energy_balance_prepare]
+
+/// [energy_balance_step]
+int energy_balance_step(Sim *sim, void *state, Seam seam)
+{
+    (void)seam;
+    EnergyBalance *B = state;
+    const Particles *P = &sim->pts;
+    const RunSettings *run = &sim->scene.run;
+    double dt = sim->dt, wg = 0, wl = 0;
+    const Scene *sc = &sim->scene;
+    for (int l = 0; l < sc->nloads; l++) {          /* before B->v moves on */
+        const Load *L = &sc->loads[l];
+        if (L->count == 0)
+            continue;
+        double scale = (L->ramp > 0.0 && sim->t < L->ramp) ? sim->t / L->ramp : 1.0;
+        double fx = scale * L->fx / L->count, fy = scale * L->fy / L->count;
+        for (int k = 0; k < L->count; k++) {
+            int p = L->points[k];
+            wl += fx * 0.5 * (B->vx[p] + P->vx[p]) + fy * 0.5 * (B->vy[p] + P->vy[p]);
+        }
+    }
+    for (int p = 0; p < P->n; p++) {
+        double mx = 0.5 * (B->vx[p] + P->vx[p]), my = 0.5 * (B->vy[p] + P->vy[p]);
+        wg += P->m[p] * (run->gx * mx + run->gy * my);
+        B->vx[p] = P->vx[p];
+        B->vy[p] = P->vy[p];
+    }
+    B->w_ext += dt * (wg + wl);
+    return 0;
+}
+/// [energy_balance_step]
+
+/// [energy_balance_damping]
+int energy_balance_damping(Sim *sim, void *state, Seam seam)
+{
+    (void)seam;
+    EnergyBalance *B = state;
+    const Grid *g = &sim->grid;
+    double dt = sim->dt, w = 0;
+    for (int s = 0; s < g->nslots; s++) {
+        double m = g->m[s];
+        if (m <= 0.0)
+            continue;
+        /* eq. 4: the force -kappa p_i (p_i of Task 3 = p - dt f) times
+           the mean of the node's velocities before and after Task 4 */
+        double px = g->px[s] - dt * g->fx[s], py = g->py[s] - dt * g->fy[s];
+        w += (px * (px + 0.5 * dt * g->fx[s]) + py * (py + 0.5 * dt * g->fy[s])) / m;
+    }
+    B->w_damp += dt * sim->scene.run.damping * w;
+    return 0;
+}
+/// [energy_balance_damping]
+
+EnergyTerms energy_balance_terms(const Sim *sim, const EnergyBalance *B)
+{
+    Totals t = sim_totals(sim);
+    EnergyTerms e;
+    e.in = B->e0 + B->w_ext;
+    e.stored = t.kinetic + t.strain;
+    e.damping = B->w_damp;
+    e.contact = 0;
+    const ContactState *C = sim_state(sim, "crack contact");
+    const MaterialContact *M = sim_state(sim, "material contact");
+    if (C)
+        e.contact -= C->work;                  /* work <= 0: dissipated */
+    if (M)
+        e.contact -= M->work;
+    e.error = e.in - e.stored - e.damping - e.contact;
+    return e;
+}
+
+/// [energy_balance_report]
+int energy_balance_report(const Sim *sim, void *state, FILE *f)
+{
+    EnergyTerms e = energy_balance_terms(sim, state);
+    double scale = e.in != 0.0 ? e.in : 1.0;
+    return fprintf(f, "mpm: energy (mJ) at t = %.6g ms: in %.9g (start %.9g, "
+                   "external work %.9g) = stored %.9g + damping %.9g + "
+                   "contact %.9g + error %.9g (%+.4f %% of in)\n", sim->t,
+                   e.in, ((const EnergyBalance *)state)->e0, e.in -
+                   ((const EnergyBalance *)state)->e0, e.stored, e.damping,
+                   e.contact, e.error, 100.0 * e.error / scale) < 0 ? -1 : 0;
+}
+/// [energy_balance_report]
+
+int energy_balance_install(Hooks *h)
+{
+    return hooks_on_prepare(h, energy_balance_prepare, NULL);
+}
