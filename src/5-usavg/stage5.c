@@ -7,12 +7,13 @@
 #include "stage5.h"
 
 #include "energy_balance.h"
+#include "usavg_scheme.h"
 
 /// [stage5_install]
 void stage5_install(Hooks *h)
 {
-    /* name, dt share at Task 2, dt share at Task 6, re-extrapolate */
-    hooks_add_scheme(h, "usavg", 0.5, 0.5, 1);   /* Nairn 2003, Task 6 */
+    UpdateScheme u = usavg_scheme();             /* Nairn 2003, Task 6 */
+    hooks_add_scheme(h, u.name, u.before, u.after, u.reextrapolate);
     energy_balance_install(h);                   /* in = stored + lost */
 }
 /// [stage5_install]
