@@ -302,3 +302,25 @@ if [ -x "$S4" ] && command -v valgrind >/dev/null 2>&1; then
         "$(awk -v a="$d1" -v b="$d4" 'BEGIN { print b / a }')" \
         "$(awk -v a="$d1" -v b="$d4t" 'BEGIN { print b / a }')"
 fi
+
+# ---- stage 5: a scene without cracks or contact costs what stage 1 costs ----
+S5=build/stage5/mpm
+if [ -x "$S5" ] && command -v valgrind >/dev/null 2>&1; then
+    echo
+    echo "stage 5: the 50k disks (no cracks, no contact), stage 1 against stage 5"
+    read -r pts i1 t < <(bash tools/task1_cost.sh build/stage1/mpm tools/bench/disks_50k.cfg "")
+    read -r pts i5 t < <(bash tools/task1_cost.sh "$S5" tools/bench/disks_50k.cfg "")
+    printf '  instructions per particle-step (callgrind, musl): stage 1 %s, stage 5 %s: %s\n' \
+        "$i1" "$i5" "$([ "$i1" = "$i5" ] && echo same || echo DIFFERENT)"
+    N=${STEPS50K:-200}
+    read -r npts dt nx ny < <(MPM=$S5 header tools/bench/disks_50k.cfg)
+    ratios=()
+    for ((r = 0; r < REPEAT; r++)); do          # pairs: neighbours slow both
+        a=$(REPEAT=1 RUN=build/stage1/mpm steps_time tools/bench/disks_50k.cfg musl "$N" "$dt")
+        b=$(REPEAT=1 RUN=$S5 steps_time tools/bench/disks_50k.cfg musl "$N" "$dt")
+        ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN { printf "%.3f", b / a }')")
+    done
+    med=$(printf '%s\n' "${ratios[@]}" | sort -n | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }')
+    printf '  time of %d steps, stage 5 / stage 1, pair by pair: median %s of %s (goal within 2 %%)\n' \
+        "$N" "$med" "${ratios[*]}"
+fi
