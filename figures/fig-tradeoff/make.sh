@@ -1,0 +1,186 @@
+#!/usr/bin/env bash
+# make fig-tradeoff: error against cost, so that a user can pick a setting.
+# Cost is the time loop's own wall time (the "N steps in T s" of the
+# program's last line: no set-up, no final output), one run at a time.
+#
+# (a) Beam impact, figures/fig6/beam_supports.cfg (contact between impactor,
+#     beam and supports) by build/stage5/mpm, each scheme (usl musl usf
+#     usavg) at cfl 0.1, 0.2, ... 1.0, run to TIME = 2 ms, not 6: contact
+#     starts near 0.5 ms and the beam is at its deepest near 2 ms, so the
+#     first half of the impact, where the schemes gain or lose energy
+#     (fig5, fig6), is in, at a third of the cost.  Error: max |E/E0 - 1|
+#     over the run (E = history.csv's total).  A run that goes unstable
+#     (exit status 3) is listed as "unstable at t" and left off the plot.
+# (b) The DCB of figures/fig1/dcb_full.cfg (musl, cfl 0.5, damped to the
+#     static state at 400 ms) on grids of about 2, 1.5 and 1 mm with the
+#     tip mid-cell (dx = 100/N, N odd, as tests/3-crossing/scenes/tip_mid_*
+#     set them; written into build/fig-tradeoff/dcb_N.cfg), 1 to 4 points
+#     per cell, and 0.5 mm with 1 point per cell.  Error: the crack opening
+#     at the load against a converged static Q4 analysis of the same loads
+#     (dcb_opening.c: stage 2's scene_fig2.c measure, its tests/support/q4.c
+#     linked, refined and extrapolated as chapter 3's fig-tip does).
+#
+# Writes build/figures/fig-tradeoff-beam.png, fig-tradeoff-dcb.png and
+# fig-tradeoff.txt (every run and the two Pareto fronts: the settings that
+# no other setting beats in both error and time); runs under
+# build/fig-tradeoff/.  About 5 minutes on one core.
+#
+# Environment: MPM (default build/stage5/mpm), TIME (beam, ms; default 2),
+# SCHEMES, CFLS, DCB_GRIDS ("N:dy:ppc,ppc ..."), FEA_H (coarsest FEA mesh,
+# mm; default 1, so meshes 1, 0.5, 0.25; 0.5 moves the references by less
+# than 0.05 %).
+set -u
+cd "$(dirname "$0")/../.."
+MPM=${MPM:-build/stage5/mpm}
+TIME=${TIME:-2.0}
+SCHEMES=${SCHEMES:-"usl musl usf usavg"}
+CFLS=${CFLS:-"0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0"}
+DCB_GRIDS=${DCB_GRIDS:-"51:2:1,2,3,4 67:1.5:1,2,3,4 101:1:1,2,3,4 201:0.5:1"}
+FEA_H=${FEA_H:-1}
+OUT=build/figures
+RUNS=build/fig-tradeoff
+FEA=$RUNS/dcb_opening
+mkdir -p "$OUT" "$RUNS"
+
+[ "$MPM" = build/stage5/mpm ] && make --no-print-directory build/stage5/mpm >/dev/null
+[ -x "$MPM" ] || { echo "fig-tradeoff: $MPM not built" >&2; exit 1; }
+# the FEA links the stage's library and the tests' Q4 solver
+make --no-print-directory build/stage5/libmpm.a build/stage5/tests/support/q4.o >/dev/null || exit 1
+cc -std=c11 -Wall -Wextra -Werror -Wshadow -Wmissing-prototypes -Wundef \
+    -D_POSIX_C_SOURCE=200809L -O2 $(printf -- '-I%s ' src/[1-5]-*) -Itests/support \
+    figures/fig-tradeoff/dcb_opening.c build/stage5/tests/support/q4.o \
+    build/stage5/libmpm.a -llapacke -lconfig -lm -o "$FEA" || exit 1
+
+# run DIR SCENE [overrides...]: one run; sets rc, loop (s), steps, why
+run() {
+    local dir=$1 scene=$2
+    shift 2
+    rm -rf "$dir"
+    "$MPM" "$scene" -q -o "$dir" run.snapshots=0 "$@" >"$dir.log" 2>&1
+    rc=$?
+    loop=$(sed -nE 's/.* \(([0-9]+) steps in ([0-9.eE+-]+) s.*/\2/p' "$dir.log")
+    steps=$(sed -nE 's/.* \(([0-9]+) steps in ([0-9.eE+-]+) s.*/\1/p' "$dir.log")
+    why=$(sed -nE 's/.*unstable at step [0-9]+ \(t = ([0-9.eE+-]+) ms\).*/unstable at \1 ms/p' "$dir.log")
+    case $rc in
+        0|3) ;;
+        *) cat "$dir.log" >&2; echo "fig-tradeoff: $dir failed (exit $rc)" >&2; exit 1 ;;
+    esac
+}
+
+# pareto < label,group,time,error -> the front, by time
+pareto() {
+    sort -t, -k3,3g -k4,4g | awk -F, 'NR == 1 || $4 < best { print; best = $4 }'
+}
+
+# ---- (a) beam impact --------------------------------------------------------
+beam=$RUNS/beam.csv
+: >"$beam"
+rows=()
+n=0 total=$(( $(wc -w <<<"$SCHEMES") * $(wc -w <<<"$CFLS") ))
+g=0
+for s in $SCHEMES; do
+    g=$((g + 1))
+    for c in $CFLS; do
+        n=$((n + 1))
+        dir=$RUNS/beam-$s-$c
+        run "$dir" figures/fig6/beam_supports.cfg run.update="$s" run.cfl="$c" run.time="$TIME"
+        if [ "$rc" = 0 ]; then
+            err=$(awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
+                NR == 2 { e0 = $c["total"] }
+                { d = $c["total"] / e0 - 1; if (d < 0) d = -d; if (d > m) m = d }
+                END { printf "%.4e", m }' "$dir/history.csv")
+            echo "$s $c,$g,$loop,$err" >>"$beam"
+            rows+=("$(printf '%-6s %4s %7s %8s %10s' "$s" "$c" "$steps" "$loop" "$err")")
+            echo "fig-tradeoff: beam $n/$total: $s cfl $c: error $err, loop $loop s"
+        else
+            rows+=("$(printf '%-6s %4s %7s %8s %10s  %s' "$s" "$c" - - - "${why:-unstable}")")
+            echo "fig-tradeoff: beam $n/$total: $s cfl $c: ${why:-unstable}"
+        fi
+    done
+done
+pareto <"$beam" >"$RUNS/beam-front.csv"
+
+# ---- (b) DCB ------------------------------------------------------------------
+# dcb_scene N DY: dcb_full.cfg on a grid of dx = 100/N, dy, 4 mm margins
+dcb_scene() {
+    awk -v N="$1" -v dy="$2" '
+        function f(v,  s) { s = sprintf("%.17g", v); return (s ~ /[.e]/) ? s : s ".0" }
+        BEGIN { dx = 100 / N; nl = int(4 / dx); if (nl * dx < 4) nl++
+                print "# written by figures/fig-tradeoff/make.sh: figures/fig1/dcb_full.cfg," 
+                printf "# dx = 100/%d, dy = %s, tip mid-cell, crack from one cell left\n", N, dy }
+        /^grid = / { g = 1 }
+        g { if (/}; *$/) { printf "grid = { origin = [%s, -24.0]; cells = [%d, %d];\n", f(-nl * dx), N + 2 * nl, 48 / dy
+                           printf "         cell_size = [%s, %s]; };\n", f(dx), f(dy); g = 0 }
+            next }
+        /^cracks = / { printf "cracks = ( { points = ( [%s, 0.0], [50.0, 0.0] ); } );\n", f(-dx); next }
+        { print }' figures/fig1/dcb_full.cfg
+}
+
+dcb=$RUNS/dcb.csv
+: >"$dcb"
+drows=()
+n=0 total=0
+for spec in $DCB_GRIDS; do
+    IFS=: read -r N dy ppcs <<<"$spec"
+    total=$((total + $(tr , ' ' <<<"$ppcs" | wc -w)))
+done
+for spec in $DCB_GRIDS; do
+    IFS=: read -r N dy ppcs <<<"$spec"
+    scene=$RUNS/dcb_$N.cfg
+    dcb_scene "$N" "$dy" >"$scene"
+    for p in ${ppcs//,/ }; do
+        n=$((n + 1))
+        dir=$RUNS/dcb-$N-$p
+        run "$dir" "$scene" bodies.[0].points_per_cell="$p"
+        if [ "$rc" != 0 ]; then
+            drows+=("$(printf '%-5s %3s %9s  %s' "$dy" "$p" "100/$N" "${why:-unstable}")")
+            echo "fig-tradeoff: dcb $n/$total: h=$dy ppc=$p: ${why:-unstable}"
+            continue
+        fi
+        read -r pts x0 y0 om f0 f1 f2 order ref err < <("$FEA" "$scene" "$dir" "$FEA_H" \
+            bodies.[0].points_per_cell="$p") || exit 1
+        ae=$(awk -v e="$err" 'BEGIN { printf "%.4e", e < 0 ? -e : e }')
+        echo "h=$dy ppc=$p,$p,$loop,$ae" >>"$dcb"
+        drows+=("$(printf '%-5s %3s %9s %7s %6s %8s %8s %8s %+9.3f %5.2f' "$dy" "$p" "100/$N" \
+            "$pts" "$steps" "$loop" "$om" "$(printf '%.5f' "$ref")" \
+            "$(awk -v e="$err" 'BEGIN { print 100 * e }')" "$order")")
+        echo "fig-tradeoff: dcb $n/$total: h=$dy ppc=$p: opening $om, FEA $ref, loop $loop s"
+    done
+done
+pareto <"$dcb" >"$RUNS/dcb-front.csv"
+
+# ---- table ---------------------------------------------------------------------
+txt=$OUT/fig-tradeoff.txt
+{
+    echo "Error against cost (make fig-tradeoff, $MPM); loop s: the time loop's wall"
+    echo "time as the program reports it, one run at a time, on: $(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)"
+    echo
+    echo "(a) beam impact, figures/fig6/beam_supports.cfg to t = $TIME ms;"
+    echo "    error = max |E/E0 - 1| over the run (E = total, 1000 rows)"
+    printf '%-6s %4s %7s %8s %10s\n' scheme cfl steps "loop s" error
+    printf '%s\n' "${rows[@]}"
+    echo "Pareto front (no run both faster and more accurate), by time:"
+    awk -F, '{ printf "  %-12s %8s s  %s\n", $1, $3, $4 }' "$RUNS/beam-front.csv"
+    echo
+    echo "(b) DCB, figures/fig1/dcb_full.cfg (musl, cfl 0.5, 400 ms, damped);"
+    echo "    h = dy (mm), dx = 100/N; opening: 2 x the y displacement of the upper"
+    echo "    arm's loaded-end face point (as tests/2-fields/scene_fig2.c); FEA: Q4 of"
+    echo "    the same loads, meshes $FEA_H, $(awk -v h="$FEA_H" 'BEGIN { print h / 2 ", " h / 4 }') mm, extrapolated with the order shown"
+    printf '%-5s %3s %9s %7s %6s %8s %8s %8s %9s %5s\n' h ppc dx points steps "loop s" \
+        "open mm" "FEA mm" "error %" order
+    printf '%s\n' "${drows[@]}"
+    echo "Pareto front, by time:"
+    awk -F, '{ printf "  %-12s %8s s  %s\n", $1, $3, $4 }' "$RUNS/dcb-front.csv"
+} >"$txt"
+cat "$txt"
+
+command -v gnuplot >/dev/null 2>&1 || { echo "fig-tradeoff: no gnuplot; $txt written" >&2; exit 1; }
+gnuplot -e "data='$beam'; front='$RUNS/beam-front.csv'; out='$OUT/fig-tradeoff-beam.png'; \
+            names='$SCHEMES'; ylab='energy error, max |E/E0 - 1|'; \
+            title='Beam impact to $TIME ms (stage 5, contact): energy error against cost, cfl 0.1 to 1'" \
+    figures/fig-tradeoff/plot.gp || exit 1
+gnuplot -e "data='$dcb'; front='$RUNS/dcb-front.csv'; out='$OUT/fig-tradeoff-dcb.png'; \
+            names='ppc=1 ppc=2 ppc=3 ppc=4'; ylab='|opening / converged FEA - 1|'; \
+            title='DCB (musl, cfl 0.5): crack-opening error against cost, cell size h and points per cell'" \
+    figures/fig-tradeoff/plot.gp || exit 1
+echo "fig-tradeoff: $OUT/fig-tradeoff-beam.png, $OUT/fig-tradeoff-dcb.png, $txt"
