@@ -30,7 +30,8 @@
 # Environment: MPM (default build/stage5/mpm), TIME (beam, ms; default 2),
 # SCHEMES, CFLS, DCB_GRIDS ("N:dy:ppc,ppc ..."), FEA_H (coarsest FEA mesh,
 # mm; default 1, so meshes 1, 0.5, 0.25; with 0.5 the reference of h=2
-# ppc=2 moved by 0.04 %).
+# ppc=2 moved by 0.04 %); TRADEOFF_RUNS (the runs' folder), TRADEOFF_TXT
+# (the table), PLOT=0 (no figures): tools/bench.sh runs a subset so.
 set -u
 cd "$(dirname "$0")/../.."
 MPM=${MPM:-build/stage5/mpm}
@@ -40,7 +41,8 @@ CFLS=${CFLS:-"0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0"}
 DCB_GRIDS=${DCB_GRIDS:-"51:2:1,2,3,4 67:1.5:1,2,3,4 101:1:1,2,3,4 133:0.75:2"}
 FEA_H=${FEA_H:-1}
 OUT=build/figures
-RUNS=build/fig-tradeoff
+RUNS=${TRADEOFF_RUNS:-build/fig-tradeoff}
+txt=${TRADEOFF_TXT:-$OUT/fig-tradeoff.txt}
 FEA=$RUNS/dcb_opening
 mkdir -p "$OUT" "$RUNS"
 load0=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
@@ -156,7 +158,6 @@ done
 pareto <"$dcb" >"$RUNS/dcb-front.csv"
 
 # ---- table ---------------------------------------------------------------------
-txt=$OUT/fig-tradeoff.txt
 {
     echo "Error against cost (make fig-tradeoff, $MPM); loop s: the time loop's wall"
     echo "time as the program reports it, one run at a time, on: $(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)"
@@ -181,6 +182,7 @@ txt=$OUT/fig-tradeoff.txt
     echo "load average before the runs: $load0; after: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)"
 } >"$txt"
 cat "$txt"
+[ "${PLOT:-1}" = 0 ] && exit 0
 
 # the runs left off each plot, for its note: "usf 0.3 usf 0.4" -> "usf 0.3, 0.4"
 left_off() {
