@@ -29,8 +29,8 @@
 #
 # Environment: MPM (default build/stage5/mpm), TIME (beam, ms; default 2),
 # SCHEMES, CFLS, DCB_GRIDS ("N:dy:ppc,ppc ..."), FEA_H (coarsest FEA mesh,
-# mm; default 1, so meshes 1, 0.5, 0.25; with 0.5 the reference of h=2
-# ppc=2 moved by 0.04 %); TRADEOFF_RUNS (the runs' folder), TRADEOFF_TXT
+# mm; default 1, so meshes 1, 0.5, 0.25; 0.5 moved the references of h=2
+# ppc=2 and h=1 ppc=4 by 0.04 and 0.02 %); TRADEOFF_RUNS (the runs' folder), TRADEOFF_TXT
 # (the table), PLOT=0 (no figures): tools/bench.sh runs a subset so.
 set -u
 cd "$(dirname "$0")/../.."
