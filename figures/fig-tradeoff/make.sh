@@ -165,7 +165,7 @@ pareto <"$dcb" >"$RUNS/dcb-front.csv"
     echo "(a) beam impact, figures/fig6/beam_supports.cfg to t = $TIME ms;"
     echo "    error = max |E/E0 - 1| over the run (E = total, 1000 rows)"
     printf '%-6s %4s %7s %8s %10s\n' scheme cfl steps "loop s" error
-    printf '%s\n' "${rows[@]}"
+    printf '%s\n' "${rows[@]}" | sed "s/ *$//"
     echo "Pareto front (no run both faster and more accurate), by time:"
     awk -F, '{ printf "  %-12s %8s s  %s\n", $1, $3, $4 }' "$RUNS/beam-front.csv"
     echo
@@ -184,6 +184,39 @@ pareto <"$dcb" >"$RUNS/dcb-front.csv"
 cat "$txt"
 [ "${PLOT:-1}" = 0 ] && exit 0
 
+# place_labels < label,group,time,error -> the same with a fifth column,
+# the side of its point each label goes (0 right above, 1 right below,
+# 2 left above, 3 left below): greedily, in order, the side whose box (in
+# pixels of the plot, roughly) overlaps least the labels and points placed
+place_labels() {
+    awk -F, -v OFS=, -v cap=1 '
+        { n++; L[n] = $1; G[n] = $2; T[n] = $3; E[n] = $4
+          X[n] = log($3) / log(10); Y[n] = log($4 > cap ? cap : $4) / log(10)
+          if (n == 1 || X[n] < x0) x0 = X[n]; if (n == 1 || X[n] > x1) x1 = X[n]
+          if (n == 1 || Y[n] < y0) y0 = Y[n]; if (n == 1 || Y[n] > y1) y1 = Y[n] }
+        function ov(a0, a1, b0, b1) { return a1 < b0 || b1 < a0 ? 0 : (a1 < b1 ? a1 : b1) - (a0 > b0 ? a0 : b0) }
+        END {
+            sx = 1250 / ((x1 - x0 + 1e-9) * 1.16); sy = 720 / ((y1 - y0 + 1e-9) * 1.2)
+            for (i = 1; i <= n; i++) { px[i] = X[i] * sx; py[i] = Y[i] * sy
+                nb++; b0[nb] = px[i] - 6; b1[nb] = px[i] + 6; c0[nb] = py[i] - 6; c1[nb] = py[i] + 6 }
+            for (i = 1; i <= n; i++) {
+                if (E[i] > cap) { print L[i], G[i], T[i], E[i], 0; continue }
+                w = 7 * length(L[i]); best = -1
+                for (q = 0; q < 4; q++) {
+                    u0 = q < 2 ? px[i] + 8 : px[i] - 8 - w; u1 = u0 + w
+                    v0 = q % 2 ? py[i] - 17 : py[i] + 2; v1 = v0 + 15
+                    cost = 0
+                    for (k = 1; k <= nb; k++) cost += ov(u0, u1, b0[k], b1[k]) * ov(v0, v1, c0[k], c1[k])
+                    if (best < 0 || cost < best) { best = cost; bq = q; bu0 = u0; bu1 = u1; bv0 = v0; bv1 = v1 }
+                }
+                nb++; b0[nb] = bu0; b1[nb] = bu1; c0[nb] = bv0; c1[nb] = bv1
+                print L[i], G[i], T[i], E[i], bq
+            }
+        }'
+}
+place_labels <"$beam" >"$RUNS/beam-labels.csv"
+place_labels <"$dcb" >"$RUNS/dcb-labels.csv"
+
 # the runs left off each plot, for its note: "usf 0.3 usf 0.4" -> "usf 0.3, 0.4"
 left_off() {
     printf '%s\n' "$@" | awk '{ if ($1 != last) { printf "%s%s %s", (NR > 1 ? "; " : ""), $1, $2; last = $1 }
@@ -195,11 +228,11 @@ dnote="every run reached the static state"
 [ ${#dunstable[@]} -gt 0 ] && dnote="left off, unstable: ${dunstable[*]}"
 
 command -v gnuplot >/dev/null 2>&1 || { echo "fig-tradeoff: no gnuplot; $txt written" >&2; exit 1; }
-gnuplot -e "data='$beam'; front='$RUNS/beam-front.csv'; out='$OUT/fig-tradeoff-beam.png'; \
+gnuplot -e "data='$RUNS/beam-labels.csv'; front='$RUNS/beam-front.csv'; out='$OUT/fig-tradeoff-beam.png'; \
             names='$SCHEMES'; note='$bnote'; ylab='energy error, max |E/E0 - 1|'; \
             title='Beam impact to $TIME ms (stage 5, contact): energy error against cost, cfl 0.1 to 1'" \
     figures/fig-tradeoff/plot.gp || exit 1
-gnuplot -e "data='$dcb'; front='$RUNS/dcb-front.csv'; out='$OUT/fig-tradeoff-dcb.png'; \
+gnuplot -e "data='$RUNS/dcb-labels.csv'; front='$RUNS/dcb-front.csv'; out='$OUT/fig-tradeoff-dcb.png'; \
             names='ppc=1 ppc=2 ppc=3 ppc=4'; note='$dnote'; ylab='|opening / converged FEA - 1|'; \
             title='DCB (musl, cfl 0.5): crack-opening error against cost, cell size h and points per cell'" \
     figures/fig-tradeoff/plot.gp || exit 1
