@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # make bench: speed and memory of the stage-1 solver on one thread, what a
 # crack costs (stage 2), what the crossing step costs by search (stage 3)
-# and what contact costs (stage 4: crack faces; bodies through contact groups).
+# and what contact costs (stage 4: crack faces; bodies through contact groups);
+# at the end, error against cost (stage 5, a subset of make fig-tradeoff).
 #
 # Speed: particle-steps per second on the two Sulsky disks refined to about
 # 50,000 and 200,000 points (tools/bench/disks_*.cfg).  Each case runs N
@@ -323,4 +324,27 @@ if [ -x "$S5" ] && command -v valgrind >/dev/null 2>&1; then
     med=$(printf '%s\n' "${ratios[@]}" | sort -n | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }')
     printf '  time of %d steps, stage 5 / stage 1, pair by pair: median %s of %s (goal within 2 %%)\n' \
         "$N" "$med" "${ratios[*]}"
+fi
+
+# ---- error against cost ------------------------------------------------------
+# A subset of make fig-tradeoff (figures/fig-tradeoff/make.sh, whose runs
+# these are): the beam impact to 2 ms, musl and usavg at cfl 0.1 and 0.5,
+# error max |E/E0 - 1|; the DCB at about 2 and 1.5 mm with 2 x 2 points per
+# cell, error of the crack opening against a converged Q4 of the same loads.
+# One run each (about 40 s): the loop times move with the neighbours.
+S5=build/stage5/mpm
+if [ -x "$S5" ]; then
+    echo
+    echo "error against cost (stage 5; loop s: the time loop, one run each; error: beam"
+    echo "impact to 2 ms max |E/E0 - 1|, DCB |opening / converged Q4 - 1|)"
+    if MPM=$S5 SCHEMES="musl usavg" CFLS="0.1 0.5" DCB_GRIDS="51:2:2 67:1.5:2" \
+            TRADEOFF_RUNS="$WORK/tradeoff" TRADEOFF_TXT="$WORK/tradeoff.txt" PLOT=0 \
+            bash figures/fig-tradeoff/make.sh >"$WORK/tradeoff.log" 2>&1; then
+        printf '%-22s %8s %11s\n' setting "loop s" error
+        awk -F, '{ printf "%-22s %8s %11s\n", "beam " $1, $3, $4 }' "$WORK/tradeoff/beam.csv"
+        awk -F, '{ printf "%-22s %8s %11s\n", "dcb " $1, $3, $4 }' "$WORK/tradeoff/dcb.csv"
+        grep 'unstable' "$WORK/tradeoff.txt" | sed 's/^/  /'
+    else
+        echo "  failed:"; tail -5 "$WORK/tradeoff.log" | sed 's/^/  /'
+    fi
 fi
