@@ -149,8 +149,8 @@ check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) bui
              $(EXERCISE_BINS)
 
 # ---- book, figures, bench ----------------------------------------------------
-# the chapters show these figures (about seven minutes to draw)
-DOC_FIGURES := $(filter fig1 fig1b fig2 fig3 fig4 fig5 fig6 fig-crossing fig-tip,$(notdir $(wildcard figures/fig*)))
+# the chapters show these figures (about twelve minutes to draw)
+DOC_FIGURES := $(filter fig1 fig1b fig2 fig3 fig4 fig5 fig6 fig-crossing fig-tip fig-tradeoff,$(notdir $(wildcard figures/fig*)))
 docs:
 	@sh tools/deps.sh docs
 	@$(MAKE) --no-print-directory $(DOC_FIGURES)
