@@ -175,7 +175,7 @@ int hooks_on_report(Hooks *h, ReportHook fn, void *state)
     return subscribe(&h->seam[SEAM_REPORT], s);
 }
 
-int hooks_run_report(const Sim *sim, FILE *f)
+int hooks_run_report(const struct Sim *sim, FILE *f)
 {
     const SeamList *l = &sim->hooks.seam[SEAM_REPORT];
     int rc = 0;
