@@ -10,6 +10,13 @@
  */
 #include "step.h"
 
+void load_point_force(const Load *L, double t, double *fx, double *fy)
+{
+    double scale = (L->ramp > 0.0 && t < L->ramp) ? t / L->ramp : 1.0;
+    *fx = scale * L->fx / L->count;
+    *fy = scale * L->fy / L->count;
+}
+
 /** Add the point loads of the scene, ramped in time, to the slot forces. */
 static void add_point_loads(Sim *sim)
 {
@@ -19,8 +26,8 @@ static void add_point_loads(Sim *sim)
         const Load *L = &sc->loads[l];
         if (L->count == 0)
             continue;
-        double scale = (L->ramp > 0.0 && sim->t < L->ramp) ? sim->t / L->ramp : 1.0;
-        double fx = scale * L->fx / L->count, fy = scale * L->fy / L->count;
+        double fx, fy;
+        load_point_force(L, sim->t, &fx, &fy);
         for (int k = 0; k < L->count; k++) {
             Stencil st;
             stencil_of_point(sim, L->points[k], &st);

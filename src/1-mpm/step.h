@@ -25,6 +25,10 @@ void locate_points(Sim *sim);
  *         nothing skips it: one field at every node. @return 0 or -1. */
 int assign_fields(Sim *sim);
 
+/** @brief The force on each loaded point of @p L at time @p t (the total
+ *         force shared by its points, ramped from zero over L->ramp). */
+void load_point_force(const Load *L, double t, double *fx, double *fy);
+
 /** @brief Tasks 1 and 3: scatter point data to the grid slots of each pair. */
 void extrapolate(Sim *sim, unsigned what);
 

@@ -9,6 +9,7 @@
 
 #include "crack_contact.h"
 #include "material_contact.h"
+#include "step.h"
 
 static void energy_balance_release(void *state)
 {
@@ -71,8 +72,8 @@ int energy_balance_step(Sim *sim, void *state, Seam seam)
         const Load *L = &sc->loads[l];
         if (L->count == 0)
             continue;
-        double scale = (L->ramp > 0.0 && sim->t < L->ramp) ? sim->t / L->ramp : 1.0;
-        double fx = scale * L->fx / L->count, fy = scale * L->fy / L->count;
+        double fx, fy;
+        load_point_force(L, sim->t, &fx, &fy);
         for (int k = 0; k < L->count; k++) {
             int p = L->points[k];
             wl += fx * 0.5 * (B->vx[p] + P->vx[p]) + fy * 0.5 * (B->vy[p] + P->vy[p]);
