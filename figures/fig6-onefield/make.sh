@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# make fig6-onefield: the beam impact of the paper's Fig. 5 and its total energy
+# (Fig. 6) for USL, MUSL and USF with the stage-1 solver (one velocity field,
+# so the impactor sticks to the beam once they share nodes).
+#
+# Writes build/figures/fig6_onefield.png (energy curves), build/figures/fig6_onefield_scene.png
+# (the layout of Fig. 5), build/figures/fig6_onefield_summary.txt, and the runs under
+# build/figures/fig6-onefield/<scheme>/.  A scheme that goes unstable (exit status 3)
+# is drawn up to where it stopped; the figure is still made.
+#
+# Environment: MPM (default build/stage1/mpm), SCHEMES (default
+# "usl musl usf"), TIME (simulated ms, default the scene's 6).
+set -u
+cd "$(dirname "$0")/../.."
+MPM=${MPM:-build/stage1/mpm}
+SCHEMES=${SCHEMES:-"usl musl usf"}
+SCENE=figures/fig6/beam_impact.cfg
+OUT=build/figures
+RUNS=$OUT/fig6-onefield
+mkdir -p "$RUNS"
+[ -x "$MPM" ] || { echo "fig6-onefield: $MPM not built" >&2; exit 1; }
+over=()
+[ -n "${TIME:-}" ] && over+=("run.time=$TIME")
+
+# the layout at t = 0 (one tiny step)
+"$MPM" "$SCENE" -q -o "$RUNS/layout" run.time=1e-9 >/dev/null || exit 1
+
+summary=$OUT/fig6_onefield_summary.txt
+{
+    echo "Fig. 6, stage 1 (one velocity field): total energy E = kinetic + strain,"
+    echo "E0 = initial energy (impactor kinetic energy).  Scene $SCENE."
+    printf '%-5s %-24s %8s %8s %8s %8s %8s %8s %8s %8s\n' scheme status \
+        "E(1)/E0" "E(2)/E0" "E(3)/E0" "E(4)/E0" "E(5)/E0" "E(6)/E0" min max
+} >"$summary"
+
+for s in $SCHEMES; do
+    dir=$RUNS/$s
+    rm -rf "$dir"
+    echo "fig6-onefield: $s ..."
+    t0=$(date +%s.%N)
+    "$MPM" "$SCENE" -q -o "$dir" run.update="$s" "${over[@]}" >"$dir.log" 2>&1
+    rc=$?
+    t1=$(date +%s.%N)
+    case $rc in
+        0) status="ran to the end" ;;
+        3) status=$(sed -nE 's/.*unstable at step [0-9]+ \(t = ([0-9.eE+-]+) ms\).*/unstable at t = \1 ms/p' "$dir.log" | tail -1) ;;
+        *) cat "$dir.log" >&2; echo "fig6-onefield: $s failed (exit $rc)" >&2; exit 1 ;;
+    esac
+    printf 'fig6-onefield: %s: %s (%.0f s)\n' "$s" "$status" \
+        "$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')"
+    # E/E0 at whole milliseconds (last row at or before), and min/max over
+    # the rows written before any blow-up (|E/E0 - 1| < 10)
+    awk -F, -v s="$s" -v st="$status" '
+        NR == 2 { e0 = $5; min = 1; max = 1 }
+        NR > 1 {
+            r = $5 / e0; tmax = $2
+            if (r < 10 && r > -10) { if (r < min) min = r; if (r > max) max = r }
+            for (k = 1; k <= 6; k++) if ($2 <= k + 1e-6) at[k] = r
+        }
+        END {
+            printf "%-5s %-24s", s, st
+            for (k = 1; k <= 6; k++)
+                if (tmax >= k - 1e-3) printf " %8.4f", at[k]; else printf " %8s", "-"
+            printf " %8.4f %8.4f\n", min, max
+        }' "$dir/history.csv" >>"$summary"
+done
+{
+    echo "Steps: 0.1 ms windows where E/E0 changes by more than 0.005 (merged):"
+    for s in $SCHEMES; do
+        awk -F, -v s="$s" '
+            NR == 2 { e0 = $5 }
+            NR > 1 { n++; t[n] = $2; e[n] = $5 / e0 }
+            END {
+                j = 1; a = 0
+                for (i = 1; i <= n; i++) {
+                    while (j < n && t[j] - t[i] < 0.1) j++
+                    if (t[j] - t[i] < 0.1 || e[j] > 10 || e[j] < -10) break
+                    big = (e[j] - e[i] > 0.005 || e[i] - e[j] > 0.005)
+                    if (big && !a) { a = 1; t0 = t[i]; e1 = e[i] }
+                    if (big) { t1 = t[j]; e2 = e[j] }
+                    if (!big && a && t[i] > t1) { a = 0; out = out sprintf("  %.2f-%.2f ms: %+.4f", t0, t1, e2 - e1) }
+                }
+                if (a) out = out sprintf("  %.2f-%.2f ms: %+.4f", t0, t1, e2 - e1)
+                printf "%-5s%s\n", s, (out == "" ? "  none" : out)
+            }' "$RUNS/$s/history.csv"
+    done
+} >>"$summary"
+cat "$summary"
+
+# the blow-up times, for labels on the plot
+labels=""
+for s in $SCHEMES; do
+    t=$(sed -nE 's/.*unstable at step [0-9]+ \(t = ([0-9.eE+-]+) ms\).*/\1/p' "$RUNS/$s.log" | tail -1)
+    [ -n "$t" ] && labels="$labels $s:$t"
+done
+
+if ! command -v gnuplot >/dev/null 2>&1; then
+    echo "fig6-onefield: gnuplot not found; runs and $summary written, no plot" >&2
+    exit 1
+fi
+gnuplot -e "runs='$RUNS'; out='$OUT'; blowups='${labels# }'" figures/fig6-onefield/plot.gp || exit 1
+echo "fig6-onefield: wrote $OUT/fig6_onefield.png, $OUT/fig6_onefield_scene.png and $summary"
