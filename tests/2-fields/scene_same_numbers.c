@@ -60,6 +60,7 @@ static const SameCase cases[] = {
     {"tools/bench/disks_50k_touching.cfg", "0.02", 4},
     {"figures/fig5/beam_impact_contact.cfg", "0.01", 4},
     {"figures/fig4/five_disks.cfg", "0.002", 4},
+    {"figures/fig6/beam_supports.cfg", "0.01", 4},
 };
 
 /** Scenes of the repository that no earlier stage runs or that another
