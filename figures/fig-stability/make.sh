@@ -122,7 +122,7 @@ run() {
             else
                 class=stable
             fi
-            note=$(awk -v d="$d" 'BEGIN { printf "%.2g%%", 100 * d }')
+            note=$(awk -v d="$d" 'BEGIN { printf (100 * d < 100 ? "%.3g%%" : "%.0f%%"), 100 * d }')
             line=$(printf '%-5s %4s %3s  %-9s max|E/E0-1| %8.3g %% at %6.3f ms  %6s s  %s' \
                    "$s" "$c" "$n" "$class" "$(awk -v d="$d" 'BEGIN { print 100 * d }')" "$tm" "$secs" "$fin")
             ;;
@@ -136,7 +136,7 @@ run() {
             q=$(sed -nE 's/.*particle -?[0-9]+ (.*) = [^;]*; stopping.*/\1/p' <<<"$msg")
             v=$(sed -nE 's/.* = ([^;]*); stopping.*/\1/p' <<<"$msg")
             b=$( [ "$p" -ge 0 ] 2>/dev/null && body_of "$n" "$p" || echo "-")
-            note=$(awk -v t="$t" 'BEGIN { printf "%.2g ms", t }')
+            note=$(awk -v t="$t" 'BEGIN { printf "%.2g", t }')
             line=$(printf '%-5s %4s %3s  %-9s at %.4g ms, step %s: particle %s (%s) %s = %s  %6s s  %s' \
                    "$s" "$c" "$n" "$class" "$t" "$step" "$p" "$b" "$q" "$v" "$secs" "$fin")
             ;;
@@ -189,7 +189,7 @@ summary=$OUT/fig-stability.txt
     echo "Stability map, stage 5: $SCENE to $TIME ms (reduced from 6),"
     echo "points per cell set on every body; one run at a time."
     echo "stopped: exit 3 with 'unstable at step N (t = X ms): particle P QUANTITY'"
-    echo "(cell: X); drifting: ran to the end with max |E/E0 - 1| > $BOUND; stable:"
+    echo "(cell: X ms); drifting: ran to the end with max |E/E0 - 1| > $BOUND; stable:"
     echo "within it (cell: max |E/E0 - 1|); refused: the scene refused (cfl > 1 without"
     echo "allow_cfl_above_one = true), then run with it set (cell: that outcome)."
     for s in $SCHEMES; do
@@ -204,7 +204,7 @@ summary=$OUT/fig-stability.txt
             for c in $CFLS; do
                 col=$((col + 1))
                 v=cell_${s}_${col}_${n}
-                printf ' %-15s' "$(sed -E 's/^stopped:/stop /; s/^stable:/ok /; s/^drifting:/DRIFT /; s/^refused:stopped/ref>stop/; s/^refused:stable/ref>ok/; s/^refused:drifting/ref>DRIFT/' <<<"${!v}")"
+                printf ' %-15s' "$(sed -E 's/^stopped:([^ ]*)/stop \1 ms/; s/^stable:/ok /; s/^drifting:/DRIFT /; s/^refused:stopped ([^ ]*)/ref>stop \1 ms/; s/^refused:stable/ref>ok/; s/^refused:drifting/ref>DRIFT/' <<<"${!v}")"
             done
             echo
         done

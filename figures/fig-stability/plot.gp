@@ -3,7 +3,7 @@
 # run did, with the stop time or the energy error written in it. Called
 # with: data (blocks per scheme: panel, column, cfl, ppc, code, label,
 # second label), out, schemes, cfls, ppcs, bound, tend.
-set terminal pngcairo size 1500,900 font 'Sans,11' noenhanced
+set terminal pngcairo size 1600,1000 font 'Sans,11' noenhanced
 set output out
 
 ncol = words(cfls)
@@ -15,13 +15,14 @@ set xtics () scale 0
 set ytics () scale 0
 set for [i = 1:ncol] xtics add (word(cfls, i) i)
 set for [j = 1:nrow] ytics add (sprintf('%sx%s', word(ppcs, j), word(ppcs, j)) j)
-set xlabel 'cfl factor (dt = cfl x cell / wave speed)'
+set xlabel 'cfl factor (dt = cfl x cell / wave speed)' offset 0,0.3
+set key spacing 1.0 height 0.5
 set ylabel 'points per cell'
 set key below horizontal samplen 1.5 font ',10'
 set style fill solid 1.0 border lc rgb 'white'
 
 set multiplot layout 2,2 title sprintf("Beam impact with contact between bodies (figures/fig6/beam_supports.cfg), run to %s ms.\n\
-stable: max |E/E0 - 1| <= %g %% (written in the cell); drifting: above it; stopped: unstable, with the step, point and quantity (its time written).\n\
+stable: max |E/E0 - 1| <= %g %% (written in the cell); drifting: above it; stopped: unstable, stopped with the step, point and quantity (its time in ms written).\n\
 cfl > 1 is refused at input; below 'refused': the same run with allow_cfl_above_one = true.", tend, 100 * bound) \
     font ',11'
 # the row of a ppc value
