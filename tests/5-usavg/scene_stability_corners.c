@@ -5,12 +5,12 @@
  *        reduced to 1.5 ms, 2 x 2 points per cell.
  *
  * - USL at cfl 0.1 stops: sim_advance() reports the step, a point and the
- *   quantity, before the bodies can touch (their point domains 1.5 mm apart
- *   at 2.43 m/s: 0.62 ms). The
- *   impactor translates rigidly (no stress in exact arithmetic), and where
- *   its edge gives a node a small share of its mass, USL's update
- *   v + dt f / m_i (eq. 20) amplifies round-off until a point leaves the
- *   grid, long before any value overflows: the points' state is finite.
+ *   quantity, before the bodies can touch (their point domains 1.5 mm
+ *   apart at 2.43 m/s: 0.62 ms). The impactor translates rigidly (no
+ *   stress in exact arithmetic), and where its edge gives a node a small
+ *   share of its mass, USL's update v + dt f / m_i (eq. 20) amplifies
+ *   round-off until a point leaves the grid, long before any value
+ *   overflows: the points' state is finite.
  * - the program on the same run: exit status 3, the message names that
  *   step, point and quantity, history.csv holds only finite numbers, and
  *   particles_final.csv is not written (only a run that ends writes it).
