@@ -30,7 +30,8 @@
 #
 # Writes build/figures/fig-stability.png, build/figures/fig-stability.txt
 # and the runs under build/figures/fig-stability/<scheme>-c<cfl>-p<ppc>/.
-# One run at a time; about 7 minutes on one core.
+# One run at a time; about 9 minutes on one core (560 s measured on a
+# machine shared with other jobs).
 #
 # Environment: MPM (default build/stage5/mpm), SCHEMES (default
 # "usl musl usf usavg"), CFLS (default "0.1 0.2 ... 1.0 1.2"), PPCS
