@@ -5,10 +5,11 @@
 # (1, 2x2, 3x3, 4x4, set on every body).
 #
 # Reduced run: 1.5 ms instead of 6. The impactor starts 1.3 mm above the
-# beam at 2.43 m/s, so contact begins near 0.55 ms and 1.5 ms holds the
-# first millimetre of the impact (the beam pushed down, the impactor's edge
-# crossing node lines, where USL's small nodal masses bite); 6 ms would make
-# the map take half an hour on one core.
+# beam at 2.43 m/s; contact begins near 0.58 ms (USAVG, 2 x 2), so 1.5 ms
+# holds the free flight, where the impactor's rows of points cross node
+# lines (USL's small nodal masses, eq. 20), and the first 0.9 ms of the
+# impact, the beam pushed down; 6 ms would make the map take about half
+# an hour on one core.
 #
 # Each run is one of:
 #   stopped   exit status 3, "mpm: unstable at step N (t = X ms): particle P
