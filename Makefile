@@ -149,7 +149,7 @@ check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) bui
              $(EXERCISE_BINS)
 
 # ---- book, figures, bench ----------------------------------------------------
-# the chapters show these figures (about twelve minutes to draw)
+# the chapters show these figures (about twenty-two minutes to draw)
 DOC_FIGURES := $(filter fig1 fig1b fig2 fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability,$(notdir $(wildcard figures/fig*)))
 docs:
 	@sh tools/deps.sh docs
