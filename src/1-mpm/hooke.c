@@ -23,11 +23,21 @@ static int hooke_read(SceneReader *r, const config_setting_t *g, Material *m)
     return 0;
 }
 
+/** The strain of stress @p s (the inverse of the plane stiffness). */
+static void hooke_strain(const Material *m, const double s[3], double e[3])
+{
+    double det = m->c11 * m->c11 - m->c12 * m->c12;
+    e[0] = (m->c11 * s[0] - m->c12 * s[1]) / det;
+    e[1] = (m->c11 * s[1] - m->c12 * s[0]) / det;
+    e[2] = s[2] / (2.0 * m->c66);
+}
+
 /** Keys of Hooke's law in a material. */
 static const char *const hooke_keys[] = {"E", "nu", NULL};
 
 /// [material_hooke]
 const MaterialLaw material_hooke = {
     "hooke", hooke_keys, hooke_read, material_prepare, elastic_stress_increment,
+    hooke_strain,
 };
 /// [material_hooke]

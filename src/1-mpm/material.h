@@ -46,6 +46,9 @@ typedef struct MaterialLaw {
     /** Stress increment for a strain increment (eq. 36): s += ... */
     void (*stress)(const Material *m, double dexx, double deyy, double dexy,
                    double s[3]);
+    /** The strain e[3] (xx, yy, tensor xy) that carries stress s[3] from
+     *  zero, for a body's initial stress; NULL: the law takes none. */
+    void (*strain)(const Material *m, const double s[3], double e[3]);
 } MaterialLaw;
 /// [material_law]
 

@@ -34,8 +34,14 @@ typedef struct Body {
     char name[64];     /**< name, used in history.csv columns */
     int material;      /**< index into Scene::mat */
     double thickness;  /**< out-of-plane thickness (mm) */
-    double vx;         /**< initial velocity x */
-    double vy;         /**< initial velocity y */
+    double vx;         /**< initial velocity x (at Body::cx, Body::cy) */
+    double vy;         /**< initial velocity y (at Body::cx, Body::cy) */
+    double L[4];       /**< initial velocity gradient: v = (vx, vy) +
+                            [L0 L1; L2 L3] (x - cx, y - cy); an angular
+                            velocity w adds [0 -w; w 0] */
+    double cx;         /**< centre of the velocity field x */
+    double cy;         /**< centre of the velocity field y */
+    double stress[3];  /**< initial stress xx, yy, xy (MPa) */
     int ppc;           /**< k: k x k points per cell */
     Shape shape;       /**< region filled */
     int line;          /**< scene-file line, for messages */
@@ -79,6 +85,9 @@ typedef struct RunSettings {
     const struct Method *method; /**< how a step is taken (run.method) */
     int snapshots;      /**< number of particle/grid snapshots after t = 0 */
     int history_every;  /**< steps between history rows (0 = automatic) */
+    int objective;      /**< rotate stress and strain by each increment's
+                             spin (run.stress_rate = "jaumann"); 0: the
+                             paper's eq. 35-36, unrotated */
 } RunSettings;
 
 /** A complete scene. */

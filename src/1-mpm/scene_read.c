@@ -69,23 +69,34 @@ int scene_number(SceneReader *r, const config_setting_t *group,
     return 1;
 }
 
-int scene_pair(SceneReader *r, const config_setting_t *group, const char *key,
-               int required, double out[2])
+int scene_numbers(SceneReader *r, const config_setting_t *group, const char *key,
+                  int n, int required, double *out)
 {
+    static const char *const form[] = {"", "one number [a]", "two numbers [a, b]",
+                                       "three numbers [a, b, c]",
+                                       "four numbers [a, b, c, d]"};
     const config_setting_t *s = config_setting_get_member(group, key);
     if (!s)
         return required ? scene_error(r, group, key, "missing (required)") : 0;
     int t = config_setting_type(s);
     if ((t != CONFIG_TYPE_ARRAY && t != CONFIG_TYPE_LIST) ||
-        config_setting_length(s) != 2)
-        return scene_error(r, s, key, "expected two numbers [a, b]");
-    for (int k = 0; k < 2; k++) {
+        config_setting_length(s) != n)
+        return scene_error(r, s, key, "expected %s", form[n]);
+    for (int k = 0; k < n; k++) {
         const config_setting_t *e = config_setting_get_elem(s, (unsigned)k);
         if (!is_number(e))
-            return scene_error(r, s, key, "expected two numbers [a, b]");
+            return scene_error(r, s, key, "expected %s", form[n]);
         out[k] = number_of(e);
+        if (!isfinite(out[k]))
+            return scene_error(r, s, key, "value %g is not finite", out[k]);
     }
     return 1;
+}
+
+int scene_pair(SceneReader *r, const config_setting_t *group, const char *key,
+               int required, double out[2])
+{
+    return scene_numbers(r, group, key, 2, required, out);
 }
 
 int scene_string(SceneReader *r, const config_setting_t *group,
@@ -357,12 +368,13 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
     static const char *const keys[] = {"time", "cfl", "allow_cfl_above_one",
         "update", "method", "damping", "plane", "gravity", "snapshots",
-        "history_every", NULL};
+        "history_every", "stress_rate", NULL};
     int st;
     const config_setting_t *g = group_of(r, root, "run", 1, &st);
     RunSettings *run = &sim->scene.run;
     double gr[2] = {0, 0}, snaps, hist;
     const char *update = "musl", *plane = "stress", *method = "mpm";
+    const char *rate = "unrotated";
     if (!g || scene_check_open_keys(r, &sim->hooks, "run", g, keys, NULL) ||
         scene_number(r, g, "time", 1, 0, &run->time) < 0 ||
         scene_number(r, g, "cfl", 0, 0.5, &run->cfl) < 0 ||
@@ -372,7 +384,8 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         scene_number(r, g, "history_every", 0, 0, &hist) < 0 ||
         scene_string(r, g, "update", 0, &update) < 0 ||
         scene_string(r, g, "method", 0, &method) < 0 ||
-        scene_string(r, g, "plane", 0, &plane) < 0)
+        scene_string(r, g, "plane", 0, &plane) < 0 ||
+        scene_string(r, g, "stress_rate", 0, &rate) < 0)
         return -1;
     if (scene_choice(r, &sim->hooks, g, "run", "method", method,
                      (const void **)&run->method))
@@ -411,6 +424,12 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
     else
         return scene_error(r, config_setting_get_member(g, "plane"), "plane",
                            "\"%s\": expected \"stress\" or \"strain\"", plane);
+    if (strcmp(rate, "unrotated") == 0 || strcmp(rate, "jaumann") == 0)
+        run->objective = rate[0] == 'j';
+    else
+        return scene_error(r, config_setting_get_member(g, "stress_rate"),
+                           "stress_rate", "\"%s\": expected \"unrotated\" (the "
+                           "paper's) or \"jaumann\" (rotated with the spin)", rate);
     run->scheme = hooks_find_scheme(&sim->hooks, update);
     if (!run->scheme) {
         const config_setting_t *u = config_setting_get_member(g, "update");
@@ -483,6 +502,7 @@ static int inside_grid(const Scene *sc, const Shape *s)
 static int read_bodies(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
     static const char *const keys[] = {"name", "material", "thickness", "velocity",
+        "angular_velocity", "velocity_gradient", "center", "stress",
         "points_per_cell", "rectangle", "disk", "polygon", NULL};
     const config_setting_t *l = config_setting_get_member(root, "bodies");
     Scene *sc = &sim->scene;
@@ -498,7 +518,8 @@ static int read_bodies(Sim *sim, SceneReader *r, const config_setting_t *root)
         const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
         Body *b = &sc->bodies[k];
         const char *name = NULL, *mat;
-        double v[2] = {0, 0}, ppc;
+        double v[2] = {0, 0}, centre[2] = {0, 0}, ppc, w = 0;
+        int has_w, has_L, has_c;
         if (config_setting_type(g) != CONFIG_TYPE_GROUP)
             return scene_error(r, g, "bodies", "entry %d: expected a group", k);
         sc->nbodies = k + 1;
@@ -508,6 +529,10 @@ static int read_bodies(Sim *sim, SceneReader *r, const config_setting_t *root)
             scene_string(r, g, "material", 1, &mat) < 0 ||
             scene_number(r, g, "thickness", 0, 1.0, &b->thickness) < 0 ||
             scene_pair(r, g, "velocity", 0, v) < 0 ||
+            (has_w = scene_number(r, g, "angular_velocity", 0, 0, &w)) < 0 ||
+            (has_L = scene_numbers(r, g, "velocity_gradient", 4, 0, b->L)) < 0 ||
+            (has_c = scene_pair(r, g, "center", 0, centre)) < 0 ||
+            scene_numbers(r, g, "stress", 3, 0, b->stress) < 0 ||
             scene_number(r, g, "points_per_cell", 0, 2, &ppc) < 0 ||
             scene_shape(r, g, &b->shape) < 0)
             return -1;
@@ -534,8 +559,22 @@ static int read_bodies(Sim *sim, SceneReader *r, const config_setting_t *root)
                                "points_per_cell", "%g must be a whole number in "
                                "[1, 16]", ppc);
         b->ppc = (int)ppc;
+        if ((has_w || has_L) && !has_c)
+            return scene_error(r, config_setting_get_member(g, has_w ?
+                               "angular_velocity" : "velocity_gradient"),
+                               has_w ? "angular_velocity" : "velocity_gradient",
+                               "needs the centre it turns about: center = [x, y] "
+                               "(the point that moves with velocity)");
+        if (has_c && !has_w && !has_L)
+            return scene_error(r, config_setting_get_member(g, "center"), "center",
+                               "is the centre of angular_velocity or "
+                               "velocity_gradient; the body gives neither");
         b->vx = v[0];
         b->vy = v[1];
+        b->cx = centre[0];
+        b->cy = centre[1];
+        b->L[1] -= w;                           /* spin w: [0 -w; w 0] */
+        b->L[2] += w;
         if (!inside_grid(sc, &b->shape))
             return scene_error(r, g, b->name, "the body [%g, %g] x [%g, %g] lies "
                                "outside the grid [%g, %g] x [%g, %g]",

@@ -31,6 +31,11 @@ int scene_error(SceneReader *r, const config_setting_t *s, const char *key,
 int scene_number(SceneReader *r, const config_setting_t *group,
                  const char *key, int required, double def, double *out);
 
+/** @brief @p n (1 to 4) finite numbers [a, b, ...] under @p key into @p out; same
+ *         returns as scene_number() (@p out untouched when absent). */
+int scene_numbers(SceneReader *r, const config_setting_t *group, const char *key,
+                  int n, int required, double *out);
+
 /** @brief A pair of numbers [a, b] under @p key; same returns as
  *         scene_number(). */
 int scene_pair(SceneReader *r, const config_setting_t *group, const char *key,

@@ -11,8 +11,9 @@
 #include "setup.h"
 
 /// [fill_body]
-/** Fill body @p b with k x k points per cell at the centres of the sub-cells. */
-static int fill_body(Sim *sim, int b)
+/** Fill body @p b with k x k points per cell at the centres of the
+ *  sub-cells, with its velocity field, its stress and strain @p e0. */
+static int fill_body(Sim *sim, int b, const double e0[3])
 {
     const Scene *sc = &sim->scene;
     const Body *B = &sc->bodies[b];
@@ -33,12 +34,50 @@ static int fill_body(Sim *sim, int b)
                                   B->material, b);
             if (p < 0)
                 return -1;
-            sim->pts.vx[p] = B->vx;
-            sim->pts.vy[p] = B->vy;
+            double rx = x - B->cx, ry = y - B->cy;
+            sim->pts.vx[p] = B->vx + B->L[0] * rx + B->L[1] * ry;
+            sim->pts.vy[p] = B->vy + B->L[2] * rx + B->L[3] * ry;
+            sim->pts.sxx[p] = B->stress[0];
+            sim->pts.syy[p] = B->stress[1];
+            sim->pts.sxy[p] = B->stress[2];
+            sim->pts.exx[p] = e0[0];
+            sim->pts.eyy[p] = e0[1];
+            sim->pts.exy[p] = e0[2];
         }
     return 0;
 }
 /// [fill_body]
+
+/** The strain @p e that carries body @p b's initial stress, checked
+ *  against the range of a small-strain law: principal strains in (-1, 1),
+ *  so that no point's area (1 + e1)(1 + e2) A vanishes. */
+static int initial_strain(const Scene *sc, int b, double e[3], char *err,
+                          size_t errlen)
+{
+    const Body *B = &sc->bodies[b];
+    const Material *mat = &sc->mat[B->material];
+    const double *s = B->stress;
+    e[0] = e[1] = e[2] = 0.0;
+    if (s[0] == 0.0 && s[1] == 0.0 && s[2] == 0.0)
+        return 0;
+    if (!mat->law->strain) {
+        snprintf(err, errlen, "%s:%d: stress: material \"%s\" (law \"%s\") "
+                 "takes no initial stress", sc->file, B->line, mat->name,
+                 mat->law->name);
+        return -1;
+    }
+    mat->law->strain(mat, s, e);
+    double mean = 0.5 * (e[0] + e[1]);
+    double rad = sqrt(0.25 * (e[0] - e[1]) * (e[0] - e[1]) + e[2] * e[2]);
+    if (!(mean + rad < 1.0 && mean - rad > -1.0)) {
+        snprintf(err, errlen, "%s:%d: stress: [%g, %g, %g] MPa is outside the "
+                 "range of material \"%s\": its principal strains %g and %g "
+                 "must lie in (-1, 1)", sc->file, B->line, s[0], s[1], s[2],
+                 mat->name, mean + rad, mean - rad);
+        return -1;
+    }
+    return 0;
+}
 
 int setup_points(Sim *sim, char *err, size_t errlen)
 {
@@ -49,7 +88,10 @@ int setup_points(Sim *sim, char *err, size_t errlen)
     }
     for (int b = 0; b < sc->nbodies; b++) {
         int before = sim->pts.n;
-        if (fill_body(sim, b)) {
+        double e0[3];
+        if (initial_strain(sc, b, e0, err, errlen))
+            return -1;
+        if (fill_body(sim, b, e0)) {
             snprintf(err, errlen, "%s: out of memory for the points", sc->file);
             return -1;
         }
