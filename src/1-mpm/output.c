@@ -54,19 +54,20 @@ void output_history_row(Sim *sim, FILE *f)
     for (int p = 0; p < P->n; p++)
         sim->bodyke[P->body[p]] +=
             0.5 * P->m[p] * (P->vx[p] * P->vx[p] + P->vy[p] * P->vy[p]);
-    fprintf(f, "%ld,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g", sim->step, sim->t,
-            t.kinetic, t.strain, t.kinetic + t.strain, t.px, t.py);
+    int d = output_digits(sim, 10);
+    fprintf(f, "%ld,%.*g,%.*g,%.*g,%.*g,%.*g,%.*g", sim->step, d, sim->t, d,
+            t.kinetic, d, t.strain, d, t.kinetic + t.strain, d, t.px, d, t.py);
     for (int b = 0; b < sim->scene.nbodies; b++)
-        fprintf(f, ",%.10g", sim->bodyke[b]);
+        fprintf(f, ",%.*g", d, sim->bodyke[b]);
     history_columns(sim, f, 0);
     fputc('\n', f);
 }
 
-static void vtu_scalar(FILE *f, const char *name, const double *a, int n)
+static void vtu_scalar(FILE *f, const char *name, const double *a, int n, int d)
 {
     fprintf(f, "<DataArray type=\"Float64\" Name=\"%s\" format=\"ascii\">\n", name);
     for (int p = 0; p < n; p++)
-        fprintf(f, "%.9g\n", a[p]);
+        fprintf(f, "%.*g\n", d, a[p]);
     fprintf(f, "</DataArray>\n");
 }
 
@@ -85,14 +86,18 @@ static int write_vtu(const Sim *sim, const char *path)
     FILE *f = fopen(path, "w");
     if (!f)
         return -1;
-    int n = P->n;
+    int n = P->n, d = output_digits(sim, 9), dx = output_digits(sim, 12);
     fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
                "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
+               "<FieldData>\n<DataArray type=\"Float64\" Name=\"TimeValue\" "
+               "NumberOfTuples=\"1\" format=\"ascii\">%.17g</DataArray>\n"
+               "<DataArray type=\"Int64\" Name=\"step\" NumberOfTuples=\"1\" "
+               "format=\"ascii\">%ld</DataArray>\n</FieldData>\n"
                "<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n<Points>\n"
                "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
-            n, n);
+            sim->t, sim->step, n, n);
     for (int p = 0; p < n; p++)
-        fprintf(f, "%.12g %.12g 0\n", P->x[p], P->y[p]);
+        fprintf(f, "%.*g %.*g 0\n", dx, P->x[p], dx, P->y[p]);
     fprintf(f, "</DataArray>\n</Points>\n<Cells>\n"
                "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n");
     for (int p = 0; p < n; p++)
@@ -107,15 +112,15 @@ static int write_vtu(const Sim *sim, const char *path)
                "<DataArray type=\"Float64\" Name=\"velocity\" NumberOfComponents=\"3\" "
                "format=\"ascii\">\n");
     for (int p = 0; p < n; p++)
-        fprintf(f, "%.9g %.9g 0\n", P->vx[p], P->vy[p]);
+        fprintf(f, "%.*g %.*g 0\n", d, P->vx[p], d, P->vy[p]);
     fprintf(f, "</DataArray>\n");
-    vtu_scalar(f, "sigma_xx", P->sxx, n);
-    vtu_scalar(f, "sigma_yy", P->syy, n);
-    vtu_scalar(f, "sigma_xy", P->sxy, n);
-    vtu_scalar(f, "eps_xx", P->exx, n);
-    vtu_scalar(f, "eps_yy", P->eyy, n);
-    vtu_scalar(f, "eps_xy", P->exy, n);
-    vtu_scalar(f, "mass", P->m, n);
+    vtu_scalar(f, "sigma_xx", P->sxx, n, d);
+    vtu_scalar(f, "sigma_yy", P->syy, n, d);
+    vtu_scalar(f, "sigma_xy", P->sxy, n, d);
+    vtu_scalar(f, "eps_xx", P->exx, n, d);
+    vtu_scalar(f, "eps_yy", P->eyy, n, d);
+    vtu_scalar(f, "eps_xy", P->exy, n, d);
+    vtu_scalar(f, "mass", P->m, n, d);
     vtu_int(f, "material", P->mat, n);
     vtu_int(f, "body", P->body, n);
     fprintf(f, "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
@@ -148,14 +153,15 @@ int output_grid_csv(Sim *sim, const char *path)
     FILE *f = fopen(path, "w");
     if (!f)
         return -1;
+    int d = output_digits(sim, 10);
     fprintf(f, "x,y,mass,sigma_xx,sigma_yy,sigma_xy\n");
     for (int n = 0; n < g->nnodes; n++) {
         if (g->m[n] <= 0)
             continue;
         double im = 1.0 / g->m[n];
-        fprintf(f, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", grid_node_x(g, n),
-                grid_node_y(g, n), g->m[n], g->fx[n] * im, g->fy[n] * im,
-                g->px[n] * im);
+        fprintf(f, "%.*g,%.*g,%.*g,%.*g,%.*g,%.*g\n", d, grid_node_x(g, n),
+                d, grid_node_y(g, n), d, g->m[n], d, g->fx[n] * im,
+                d, g->fy[n] * im, d, g->px[n] * im);
     }
     grid_clear(g);
     return fclose(f) == 0 ? 0 : -1;
@@ -169,11 +175,12 @@ int output_points_csv(const Sim *sim, const char *path)
         return -1;
     fprintf(f, "x,y,vx,vy,sigma_xx,sigma_yy,sigma_xy,eps_xx,eps_yy,eps_xy,"
                "mass,material,body\n");
+    int d = output_digits(sim, 10), dx = output_digits(sim, 12);
     for (int p = 0; p < P->n; p++)
-        fprintf(f, "%.12g,%.12g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
-                   "%.10g,%d,%d\n", P->x[p], P->y[p], P->vx[p], P->vy[p],
-                P->sxx[p], P->syy[p], P->sxy[p], P->exx[p], P->eyy[p], P->exy[p],
-                P->m[p], P->mat[p], P->body[p]);
+        fprintf(f, "%.*g,%.*g,%.*g,%.*g,%.*g,%.*g,%.*g,%.*g,%.*g,%.*g,%.*g,%d,%d\n",
+                dx, P->x[p], dx, P->y[p], d, P->vx[p], d, P->vy[p], d, P->sxx[p],
+                d, P->syy[p], d, P->sxy[p], d, P->exx[p], d, P->eyy[p],
+                d, P->exy[p], d, P->m[p], P->mat[p], P->body[p]);
     return fclose(f) == 0 ? 0 : -1;
 }
 
@@ -198,8 +205,8 @@ int output_snapshot(Sim *sim, const char *dir, int index, const double *times)
     fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
                "<Collection>\n");
     for (int k = 0; k <= index; k++)
-        fprintf(f, "<DataSet timestep=\"%.10g\" file=\"particles_%05d.vtu\"/>\n",
-                times[k], k);
+        fprintf(f, "<DataSet timestep=\"%.*g\" file=\"particles_%05d.vtu\"/>\n",
+                output_digits(sim, 10), times[k], k);
     fprintf(f, "</Collection>\n</VTKFile>\n");
     return fclose(f) == 0 ? 0 : -1;
 }

@@ -10,6 +10,14 @@
 
 #include "sim.h"
 
+/** @brief Significant digits of a number written to an output file: the
+ *         writer's @p usual count, or 17 (every bit of a double) when the
+ *         scene asks for run.precision = "full". */
+static inline int output_digits(const Sim *sim, int usual)
+{
+    return sim->scene.run.full_precision ? 17 : usual;
+}
+
 /** @brief Create @p dir and its parents if missing. @return 0 or -1. */
 int output_make_dir(const char *dir);
 

@@ -3,6 +3,7 @@
  * @brief The run loop: steps, history, snapshots, progress, and the stop
  *        on instability.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
@@ -31,6 +32,16 @@ static void progress_line(const Sim *sim, double start, double *last)
     fflush(stderr);
 }
 
+/** The step whose time is nearest snapshot @p k's asked time, k T / K for
+ *  K snapshots over the run's time T (a whole step at least, at most the
+ *  last). */
+static long snapshot_step(const Sim *sim, int k)
+{
+    const RunSettings *run = &sim->scene.run;
+    long n = lround(k * run->time / (run->snapshots * sim->dt));
+    return n < 1 ? 1 : n > sim->nsteps ? sim->nsteps : n;
+}
+
 /// [sim_run]
 int sim_run(Sim *sim, const char *outdir, int progress)
 {
@@ -52,9 +63,8 @@ int sim_run(Sim *sim, const char *outdir, int progress)
     }
     long hist_every = run->history_every > 0 ? run->history_every
                                              : (sim->nsteps + 999) / 1000;
-    long snap_every = run->snapshots > 0
-        ? (sim->nsteps + run->snapshots - 1) / run->snapshots : sim->nsteps + 1;
-    int nsnap = 0, rc = 0;
+    int nsnap = 0, asked = 1, rc = 0;             /* asked: the next snapshot k */
+    long snap_at = run->snapshots > 0 ? snapshot_step(sim, 1) : -1;
     progress = progress && isatty(STDERR_FILENO);
     double start = wall_seconds(), last = 0;
 
@@ -78,11 +88,13 @@ int sim_run(Sim *sim, const char *outdir, int progress)
         }
         if (sim->step % hist_every == 0 || sim->step == sim->nsteps)
             output_history_row(sim, hist);
-        if ((sim->step % snap_every == 0 || sim->step == sim->nsteps) &&
-            nsnap > 0 && nsnap <= run->snapshots) {
+        if (sim->step == snap_at) {                /* the step nearest k T / K */
             times[nsnap] = sim->t;
             if (output_snapshot(sim, outdir, nsnap++, times))
                 rc = 2;
+            while (asked <= run->snapshots && snapshot_step(sim, asked) <= sim->step)
+                asked++;                           /* two asked times, one step */
+            snap_at = asked <= run->snapshots ? snapshot_step(sim, asked) : -1;
         }
         if (progress)
             progress_line(sim, start, &last);

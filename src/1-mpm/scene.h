@@ -85,6 +85,8 @@ typedef struct RunSettings {
     const struct Method *method; /**< how a step is taken (run.method) */
     int snapshots;      /**< number of particle/grid snapshots after t = 0 */
     int history_every;  /**< steps between history rows (0 = automatic) */
+    int full_precision; /**< write 17 significant digits (run.precision =
+                             "full"); 0: the usual 9 to 12 */
     int objective;      /**< rotate stress and strain by each increment's
                              spin (run.stress_rate = "jaumann"); 0: the
                              paper's eq. 35-36, unrotated */

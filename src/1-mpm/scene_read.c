@@ -368,13 +368,13 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
     static const char *const keys[] = {"time", "cfl", "allow_cfl_above_one",
         "update", "method", "damping", "plane", "gravity", "snapshots",
-        "history_every", "stress_rate", NULL};
+        "history_every", "stress_rate", "precision", NULL};
     int st;
     const config_setting_t *g = group_of(r, root, "run", 1, &st);
     RunSettings *run = &sim->scene.run;
     double gr[2] = {0, 0}, snaps, hist;
     const char *update = "musl", *plane = "stress", *method = "mpm";
-    const char *rate = "unrotated";
+    const char *rate = "unrotated", *precision = "usual";
     if (!g || scene_check_open_keys(r, &sim->hooks, "run", g, keys, NULL) ||
         scene_number(r, g, "time", 1, 0, &run->time) < 0 ||
         scene_number(r, g, "cfl", 0, 0.5, &run->cfl) < 0 ||
@@ -385,8 +385,15 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         scene_string(r, g, "update", 0, &update) < 0 ||
         scene_string(r, g, "method", 0, &method) < 0 ||
         scene_string(r, g, "plane", 0, &plane) < 0 ||
-        scene_string(r, g, "stress_rate", 0, &rate) < 0)
+        scene_string(r, g, "stress_rate", 0, &rate) < 0 ||
+        scene_string(r, g, "precision", 0, &precision) < 0)
         return -1;
+    if (strcmp(precision, "usual") == 0 || strcmp(precision, "full") == 0)
+        run->full_precision = precision[0] == 'f';
+    else
+        return scene_error(r, config_setting_get_member(g, "precision"),
+                           "precision", "\"%s\": expected \"usual\" (10 "
+                           "significant digits) or \"full\" (17)", precision);
     if (scene_choice(r, &sim->hooks, g, "run", "method", method,
                      (const void **)&run->method))
         return -1;

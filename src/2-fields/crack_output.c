@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "cracks.h"
+#include "output.h"
 
 /** Close @p f; -1 when it or any write to it failed. */
 static int close_checked(FILE *f)
@@ -19,7 +20,7 @@ int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index)
 {
     const Cracks *C = state;
     char path[1200];
-    (void)sim;
+    int d = output_digits(sim, 12);
     snprintf(path, sizeof path, "%s/cracks_%05d.csv", dir, index);
     FILE *f = fopen(path, "w");
     if (!f)
@@ -27,7 +28,7 @@ int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index)
     fprintf(f, "crack,point,x,y\n");
     for (int k = 0; k < C->ncracks; k++)
         for (int j = 0; j < C->crack[k].n; j++)
-            fprintf(f, "%d,%d,%.12g,%.12g\n", k, j, C->crack[k].x[j],
+            fprintf(f, "%d,%d,%.*g,%.*g\n", k, j, d, C->crack[k].x[j], d,
                     C->crack[k].y[j]);
     if (close_checked(f))
         return -1;
@@ -44,7 +45,7 @@ int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index)
                "NumberOfComponents=\"3\" format=\"ascii\">\n", npts, C->ncracks);
     for (int k = 0; k < C->ncracks; k++)
         for (int j = 0; j < C->crack[k].n; j++)
-            fprintf(f, "%.12g %.12g 0\n", C->crack[k].x[j], C->crack[k].y[j]);
+            fprintf(f, "%.*g %.*g 0\n", d, C->crack[k].x[j], d, C->crack[k].y[j]);
     fprintf(f, "</DataArray>\n</Points>\n<Lines>\n<DataArray type=\"Int32\" "
                "Name=\"connectivity\" format=\"ascii\">\n");
     for (int j = 0; j < npts; j++)

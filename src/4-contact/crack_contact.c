@@ -9,6 +9,7 @@
 #include <stdlib.h>
 
 #include "crack_contact.h"
+#include "output.h"
 #include "step.h"
 
 int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
@@ -175,8 +176,8 @@ int crack_contact_task(Sim *sim, void *state, Seam seam)
 int crack_contact_history(const Sim *sim, void *state, FILE *f, int header)
 {
     const ContactState *S = state;
-    (void)sim;
     if (header)
         return fprintf(f, ",contact_nodes,contact_work") < 0 ? -1 : 0;
-    return fprintf(f, ",%d,%.10g", S->nodes, S->work) < 0 ? -1 : 0;
+    return fprintf(f, ",%d,%.*g", S->nodes, output_digits(sim, 10), S->work) < 0
+               ? -1 : 0;
 }

@@ -12,6 +12,7 @@
 
 #include "contact_law.h"
 #include "material_contact.h"
+#include "output.h"
 #include "step.h"
 
 int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
@@ -224,7 +225,7 @@ int material_contact_history(const Sim *sim, void *state, FILE *f, int header)
                 return -1;
         return 0;
     }
-    if (fprintf(f, ",%d,%.10g", M->nodes, M->work) < 0)
+    if (fprintf(f, ",%d,%.*g", M->nodes, output_digits(sim, 10), M->work) < 0)
         return -1;
     for (int b = 0; b < sc->nbodies; b++) {    /* each body's momentum */
         double px = 0.0, py = 0.0;
@@ -233,7 +234,8 @@ int material_contact_history(const Sim *sim, void *state, FILE *f, int header)
                 px += P->m[p] * P->vx[p];
                 py += P->m[p] * P->vy[p];
             }
-        if (fprintf(f, ",%.10g,%.10g", px, py) < 0)
+        if (fprintf(f, ",%.*g,%.*g", output_digits(sim, 10), px,
+                    output_digits(sim, 10), py) < 0)
             return -1;
     }
     return 0;
