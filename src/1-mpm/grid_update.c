@@ -78,6 +78,51 @@ static void contact_rederive(Grid *g, int s, int task4, double idt)
     }
 }
 
+/** The velocity boundary @p B holds at time @p t (ramped from zero). */
+static void held_velocity(const Boundary *B, double t, double v[2])
+{
+    double scale = (B->ramp > 0.0 && t < B->ramp) ? t / B->ramp : 1.0;
+    v[0] = scale * B->vx;
+    v[1] = scale * B->vy;
+}
+
+/// [grid_prescribe]
+void grid_prescribe(Sim *sim, Seam seam)
+{
+    if (sim->nmoving == 0)
+        return;
+    Grid *g = &sim->grid;
+    const FieldTable *F = &sim->fields;
+    int task2 = seam == SEAM_TASK2_CONTACT, task4 = seam == SEAM_TASK4_CONTACT;
+    double dt = sim->dt;
+    for (int k = 0; k < sim->nmoving; k++) {
+        const Boundary *B = &sim->scene.bc[sim->moving_bc[k]];
+        double v0[2], v[2];
+        held_velocity(B, sim->t, v0);                 /* Task 2: time t */
+        held_velocity(B, task2 ? sim->t : sim->t + dt, v);   /* then t + dt */
+        for (int s = sim->moving[k]; s >= 0; s = field_next(F, g, s)) {
+            double m = g->m[s];
+            if (B->fix & GRID_FIX_X) {
+                g->px[s] = m * v[0];
+                g->vx[s] = v[0];
+                if (task4) {                          /* f = m dv / dt */
+                    g->ax[s] = (v[0] - v0[0]) / dt;
+                    g->fx[s] = m * g->ax[s];
+                }
+            }
+            if (B->fix & GRID_FIX_Y) {
+                g->py[s] = m * v[1];
+                g->vy[s] = v[1];
+                if (task4) {
+                    g->ay[s] = (v[1] - v0[1]) / dt;
+                    g->fy[s] = m * g->ay[s];
+                }
+            }
+        }
+    }
+}
+/// [grid_prescribe]
+
 /// [grid_contact]
 int grid_contact(Sim *sim, Seam seam)
 {

@@ -47,10 +47,16 @@ typedef struct Body {
     int line;          /**< scene-file line, for messages */
 } Body;
 
-/** Nodes inside a box whose velocity is held at zero along x and/or y. */
+/** Nodes inside a box whose velocity is held along x and/or y: at zero,
+ *  or at a prescribed velocity, ramped in from zero. */
 typedef struct Boundary {
-    Shape region;      /**< rectangle: nodes in it (edges included) are fixed */
-    unsigned fix;      /**< GRID_FIX_X | GRID_FIX_Y */
+    Shape region;      /**< rectangle: nodes in it (edges included) are held */
+    unsigned fix;      /**< GRID_FIX_X | GRID_FIX_Y: the directions held */
+    double vx;         /**< velocity held along x (if fixed in x) */
+    double vy;         /**< velocity held along y (if fixed in y) */
+    double ramp;       /**< time to reach full velocity (ms); 0 = at once */
+    int moving;        /**< a velocity other than zero is prescribed */
+    int line;          /**< scene-file line, for messages */
 } Boundary;
 
 /** A force shared equally by the points inside a box. */

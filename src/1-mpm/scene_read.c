@@ -616,7 +616,7 @@ static int read_regions(SceneReader *r, const config_setting_t *root,
 
 static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
-    static const char *const keys[] = {"rectangle", "fix", NULL};
+    static const char *const keys[] = {"rectangle", "fix", "velocity", "ramp", NULL};
     Scene *sc = &sim->scene;
     int st = read_regions(r, root, "boundaries", &sc->nbc, (void **)&sc->bc,
                           sizeof(Boundary));
@@ -626,8 +626,13 @@ static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *roo
     for (int k = 0; k < sc->nbc; k++) {
         const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
         const char *fix;
-        if (scene_check_keys(r, g, keys) || scene_shape(r, g, &sc->bc[k].region) < 0 ||
-            scene_string(r, g, "fix", 1, &fix) < 0)
+        Boundary *B = &sc->bc[k];
+        double v[2] = {0.0, 0.0};
+        B->line = (int)config_setting_source_line(g);
+        if (scene_check_keys(r, g, keys) || scene_shape(r, g, &B->region) < 0 ||
+            scene_string(r, g, "fix", 1, &fix) < 0 ||
+            scene_pair(r, g, "velocity", 0, v) < 0 ||
+            scene_number(r, g, "ramp", 0, 0.0, &B->ramp) < 0)
             return -1;
         if (strcmp(fix, "x") == 0)
             sc->bc[k].fix = GRID_FIX_X;
@@ -638,6 +643,17 @@ static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *roo
         else
             return scene_error(r, config_setting_get_member(g, "fix"), "fix",
                                "\"%s\": expected \"x\", \"y\" or \"xy\"", fix);
+        if ((v[0] != 0.0 && !(B->fix & GRID_FIX_X)) ||
+            (v[1] != 0.0 && !(B->fix & GRID_FIX_Y)))
+            return scene_error(r, config_setting_get_member(g, "velocity"), "velocity",
+                               "[%g, %g] moves a direction that fix = \"%s\" leaves "
+                               "free", v[0], v[1], fix);
+        if (!(B->ramp >= 0.0))
+            return scene_error(r, config_setting_get_member(g, "ramp"), "ramp",
+                               "%g must be >= 0", B->ramp);
+        B->vx = v[0];
+        B->vy = v[1];
+        B->moving = v[0] != 0.0 || v[1] != 0.0;
     }
     return 0;
 }

@@ -114,16 +114,52 @@ int setup_grid(Sim *sim, char *err, size_t errlen)
         return -1;
     }
     double tol = 1e-9 * fmin(sc->dx, sc->dy);
+    int *owner = malloc(sizeof(int) * (size_t)g->nnodes);  /* the boundary */
+    if (!owner) {
+        snprintf(err, errlen, "%s: out of memory for the grid", sc->file);
+        return -1;
+    }
+    for (int n = 0; n < g->nnodes; n++)
+        owner[n] = -1;
     for (int k = 0; k < sc->nbc; k++) {
-        Shape r = sc->bc[k].region;          /* nodes on its edges count */
+        const Boundary *B = &sc->bc[k];
+        Shape r = B->region;                 /* nodes on its edges count */
         r.xmin -= tol;
         r.ymin -= tol;
         r.xmax += tol;
         r.ymax += tol;
-        for (int n = 0; n < g->nnodes; n++)
-            if (shape_contains(&r, grid_node_x(g, n), grid_node_y(g, n)))
-                g->fixed[n] |= (unsigned char)sc->bc[k].fix;
+        for (int n = 0; n < g->nnodes; n++) {
+            if (!shape_contains(&r, grid_node_x(g, n), grid_node_y(g, n)))
+                continue;
+            int o = owner[n];
+            if (o >= 0 && (B->moving || sc->bc[o].moving)) {
+                snprintf(err, errlen, "%s:%d: boundaries: the node at (%g, %g) is "
+                         "also held by the boundary at line %d; a prescribed "
+                         "velocity and another hold on one node contradict",
+                         sc->file, B->line, grid_node_x(g, n), grid_node_y(g, n),
+                         sc->bc[o].line);
+                free(owner);
+                return -1;
+            }
+            g->fixed[n] |= (unsigned char)B->fix;
+            owner[n] = k;
+            sim->nmoving += B->moving;
+        }
     }
+    sim->moving = malloc(sizeof(int) * (size_t)(sim->nmoving + 1));
+    sim->moving_bc = malloc(sizeof(int) * (size_t)(sim->nmoving + 1));
+    if (!sim->moving || !sim->moving_bc) {
+        snprintf(err, errlen, "%s: out of memory for the grid", sc->file);
+        free(owner);
+        return -1;
+    }
+    int m = 0;
+    for (int n = 0; n < g->nnodes; n++)
+        if (owner[n] >= 0 && sc->bc[owner[n]].moving) {
+            sim->moving[m] = n;
+            sim->moving_bc[m++] = owner[n];
+        }
+    free(owner);
     return 0;
 }
 

@@ -157,4 +157,8 @@ void sim_free(Sim *sim)
     scene_free(&sim->scene);
     free(sim->bodyke);
     sim->bodyke = NULL;
+    free(sim->moving);
+    free(sim->moving_bc);
+    sim->moving = sim->moving_bc = NULL;
+    sim->nmoving = 0;
 }

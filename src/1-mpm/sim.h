@@ -48,6 +48,9 @@ typedef struct Sim {
     long nsteps;        /**< steps the run will take */
     Failure fail;       /**< filled when sim_step() reports instability */
     double *bodyke;     /**< scratch: kinetic energy per body */
+    int nmoving;        /**< nodes held at a prescribed velocity */
+    int *moving;        /**< those nodes */
+    int *moving_bc;     /**< the boundary (Scene::bc) that holds each */
     double loop_seconds; /**< wall time of sim_run()'s time loop, output included */
 } Sim;
 

@@ -34,6 +34,7 @@ int sim_step(Sim *sim)
     grid_velocities(sim);                         /* Task 2 */
     if (grid_contact(sim, SEAM_TASK2_CONTACT))
         return -1;
+    grid_prescribe(sim, SEAM_TASK2_CONTACT);      /* moving boundaries */
     if (us->before > 0) {                         /* USF (and USAVG) */
         if (update_stress(sim, us->before * dt))
             return -1;
@@ -43,6 +44,7 @@ int sim_step(Sim *sim)
     grid_momentum_update(sim);                    /* Tasks 3-4 */
     if (grid_contact(sim, SEAM_TASK4_CONTACT))
         return -1;
+    grid_prescribe(sim, SEAM_TASK4_CONTACT);
 
     if (update_points(sim))                       /* Task 5 */
         return -1;
@@ -55,6 +57,7 @@ int sim_step(Sim *sim)
             grid_velocities(sim);
             if (grid_contact(sim, SEAM_TASK6_CONTACT))
                 return -1;
+            grid_prescribe(sim, SEAM_TASK6_CONTACT);
         }
         if (update_stress(sim, us->after * dt))   /* 6a: USL uses Task 4 */
             return -1;

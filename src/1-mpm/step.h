@@ -50,6 +50,15 @@ void grid_momentum_update(Sim *sim);
  */
 int grid_contact(Sim *sim, Seam seam);
 
+/**
+ * @brief Hold the nodes of moving boundaries at their prescribed velocity
+ *        (every field of the node), after the grid task of @p seam and its
+ *        contact: at Task 2 the velocity of time t, at Tasks 4 and 6 that
+ *        of t + dt, and at Task 4 the force m dv/dt that gets there.
+ *        Nothing when the scene prescribes none.
+ */
+void grid_prescribe(Sim *sim, Seam seam);
+
 /** @brief Task 5: point velocities and positions (eq. 30); 0 or -1 on
  *         instability (Sim::fail filled). */
 int update_points(Sim *sim);
