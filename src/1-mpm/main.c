@@ -17,7 +17,7 @@ static void usage(FILE *f)
         "\n"
         "Run the material point method (stage %d of the book) on SCENE, a\n"
         "libconfig file in units of mm, g and ms (force N, stress MPa,\n"
-        "velocity m/s, energy mJ).\n"
+        "velocity m/s, energy mJ), or of m, kg and s with run.units = \"SI\".\n"
         "\n"
         "  -o OUTDIR   write output here (default: output)\n"
         "  -q          no progress line\n"
@@ -85,10 +85,10 @@ int main(int argc, char **argv)
         free(over);
         return 1;
     }
-    printf("mpm (stage %d): %s: %d points, grid %d x %d cells, dt = %.6g ms, "
+    printf("mpm (stage %d): %s: %d points, grid %d x %d cells, dt = %.6g %s, "
            "%ld steps, update %s\n", mpm_stage(), scene, sim->pts.n,
-           sim->scene.ncx, sim->scene.ncy, sim->dt, sim->nsteps,
-           sim->scene.run.scheme->name);
+           sim->scene.ncx, sim->scene.ncy, sim->dt, sim->scene.run.units->time,
+           sim->nsteps, sim->scene.run.scheme->name);
     fflush(stdout);
     int rc = sim_run(sim, outdir, !quiet);
     if ((rc == 0 || rc == 3) && hooks_run_report(sim, stdout))

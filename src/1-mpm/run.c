@@ -27,8 +27,8 @@ static void progress_line(const Sim *sim, double start, double *last)
     *last = now;
     double frac = (double)sim->step / (double)sim->nsteps;
     double left = frac > 0 ? (now - start) * (1 - frac) / frac : 0;
-    fprintf(stderr, "\r  step %ld/%ld  t = %.4g ms  %3.0f%%  about %.0f s left   ",
-            sim->step, sim->nsteps, sim->t, 100 * frac, left);
+    fprintf(stderr, "\r  step %ld/%ld  t = %.4g %s  %3.0f%%  about %.0f s left   ",
+            sim->step, sim->nsteps, sim->t, sim->scene.run.units->time, 100 * frac, left);
     fflush(stderr);
 }
 
@@ -80,9 +80,10 @@ int sim_run(Sim *sim, const char *outdir, int progress)
             const Failure *f = &sim->fail;
             if (progress)
                 fputc('\n', stderr);
-            fprintf(stderr, "mpm: unstable at step %ld (t = %.6g ms): particle %d "
+            fprintf(stderr, "mpm: unstable at step %ld (t = %.6g %s): particle %d "
                     "%s = %g; stopping, output so far is in %s\n", f->step,
-                    f->time, f->particle, f->quantity, f->value, outdir);
+                    f->time, run->units->time, f->particle, f->quantity, f->value,
+                    outdir);
             rc = 3;
             break;
         }

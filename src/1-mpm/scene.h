@@ -10,6 +10,7 @@
 #define MPM_SCENE_H
 
 #include "material.h"
+#include "units.h"
 
 /** Kind of region a body fills. */
 typedef enum { SHAPE_RECTANGLE, SHAPE_DISK, SHAPE_POLYGON } ShapeKind;
@@ -33,7 +34,8 @@ typedef struct Shape {
 typedef struct Body {
     char name[64];     /**< name, used in history.csv columns */
     int material;      /**< index into Scene::mat */
-    double thickness;  /**< out-of-plane thickness (mm) */
+    double thickness;  /**< out-of-plane thickness (default 1 mm in the
+                            scene's units) */
     double vx;         /**< initial velocity x (at Body::cx, Body::cy) */
     double vy;         /**< initial velocity y (at Body::cx, Body::cy) */
     double L[4];       /**< initial velocity gradient: v = (vx, vy) +
@@ -91,6 +93,7 @@ typedef struct RunSettings {
     const struct Method *method; /**< how a step is taken (run.method) */
     int snapshots;      /**< number of particle/grid snapshots after t = 0 */
     int history_every;  /**< steps between history rows (0 = automatic) */
+    const Units *units; /**< the scene's unit system (run.units) */
     int full_precision; /**< write 17 significant digits (run.precision =
                              "full"); 0: the usual 9 to 12 */
     int objective;      /**< rotate stress and strain by each increment's

@@ -368,13 +368,13 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
     static const char *const keys[] = {"time", "cfl", "allow_cfl_above_one",
         "update", "method", "damping", "plane", "gravity", "snapshots",
-        "history_every", "stress_rate", "precision", NULL};
+        "history_every", "stress_rate", "precision", "units", NULL};
     int st;
     const config_setting_t *g = group_of(r, root, "run", 1, &st);
     RunSettings *run = &sim->scene.run;
     double gr[2] = {0, 0}, snaps, hist;
     const char *update = "musl", *plane = "stress", *method = "mpm";
-    const char *rate = "unrotated", *precision = "usual";
+    const char *rate = "unrotated", *precision = "usual", *units = "mm-g-ms";
     if (!g || scene_check_open_keys(r, &sim->hooks, "run", g, keys, NULL) ||
         scene_number(r, g, "time", 1, 0, &run->time) < 0 ||
         scene_number(r, g, "cfl", 0, 0.5, &run->cfl) < 0 ||
@@ -386,8 +386,14 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         scene_string(r, g, "method", 0, &method) < 0 ||
         scene_string(r, g, "plane", 0, &plane) < 0 ||
         scene_string(r, g, "stress_rate", 0, &rate) < 0 ||
-        scene_string(r, g, "precision", 0, &precision) < 0)
+        scene_string(r, g, "precision", 0, &precision) < 0 ||
+        scene_string(r, g, "units", 0, &units) < 0)
         return -1;
+    run->units = units_find(units);
+    if (!run->units)
+        return scene_error(r, config_setting_get_member(g, "units"), "units",
+                           "\"%s\": expected \"mm-g-ms\" (the default) or \"SI\"",
+                           units);
     if (strcmp(precision, "usual") == 0 || strcmp(precision, "full") == 0)
         run->full_precision = precision[0] == 'f';
     else
@@ -534,7 +540,7 @@ static int read_bodies(Sim *sim, SceneReader *r, const config_setting_t *root)
         if (scene_check_open_keys(r, &sim->hooks, "bodies", g, keys, NULL) ||
             scene_string(r, g, "name", 0, &name) < 0 ||
             scene_string(r, g, "material", 1, &mat) < 0 ||
-            scene_number(r, g, "thickness", 0, 1.0, &b->thickness) < 0 ||
+            scene_number(r, g, "thickness", 0, sc->run.units->mm, &b->thickness) < 0 ||
             scene_pair(r, g, "velocity", 0, v) < 0 ||
             (has_w = scene_number(r, g, "angular_velocity", 0, 0, &w)) < 0 ||
             (has_L = scene_numbers(r, g, "velocity_gradient", 4, 0, b->L)) < 0 ||

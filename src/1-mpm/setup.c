@@ -70,10 +70,10 @@ static int initial_strain(const Scene *sc, int b, double e[3], char *err,
     double mean = 0.5 * (e[0] + e[1]);
     double rad = sqrt(0.25 * (e[0] - e[1]) * (e[0] - e[1]) + e[2] * e[2]);
     if (!(mean + rad < 1.0 && mean - rad > -1.0)) {
-        snprintf(err, errlen, "%s:%d: stress: [%g, %g, %g] MPa is outside the "
+        snprintf(err, errlen, "%s:%d: stress: [%g, %g, %g] %s is outside the "
                  "range of material \"%s\": its principal strains %g and %g "
                  "must lie in (-1, 1)", sc->file, B->line, s[0], s[1], s[2],
-                 mat->name, mean + rad, mean - rad);
+                 sc->run.units->stress, mat->name, mean + rad, mean - rad);
         return -1;
     }
     return 0;

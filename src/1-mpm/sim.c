@@ -15,6 +15,7 @@
 void sim_init(Sim *sim)
 {
     memset(sim, 0, sizeof *sim);
+    sim->scene.run.units = units_default();
 }
 
 int sim_attach(Sim *sim, const char *name, void *state,

@@ -134,10 +134,11 @@ int energy_balance_report(const Sim *sim, void *state, FILE *f)
 {
     EnergyTerms e = energy_balance_terms(sim, state);
     double scale = e.in != 0.0 ? e.in : 1.0;
-    return fprintf(f, "mpm: energy (mJ) at t = %.6g ms: in %.9g (start %.9g, "
+    const Units *u = sim->scene.run.units;
+    return fprintf(f, "mpm: energy (%s) at t = %.6g %s: in %.9g (start %.9g, "
                    "external work %.9g) = stored %.9g + damping %.9g + "
-                   "contact %.9g + error %.9g (%+.4f %% of in)\n", sim->t,
-                   e.in, ((const EnergyBalance *)state)->e0, e.in -
+                   "contact %.9g + error %.9g (%+.4f %% of in)\n", u->energy,
+                   sim->t, u->time, e.in, ((const EnergyBalance *)state)->e0, e.in -
                    ((const EnergyBalance *)state)->e0, e.stored, e.damping,
                    e.contact, e.error, 100.0 * e.error / scale) < 0 ? -1 : 0;
 }

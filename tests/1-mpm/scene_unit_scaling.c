@@ -17,7 +17,9 @@
  * column of pure round-off, such as the x momentum, is compared at the
  * scale of its kind, not at its own). An integer (step, material, body,
  * connectivity) must be equal. A column whose unit the test does not know
- * fails it, so that a new output column gets a unit here.
+ * fails it, so that a new output column gets a unit here. The SI scene says
+ * units = "SI" and gives no thickness: the default must be 1 mm there too
+ * (1e-3 m), and the start line must say "s".
  */
 #include <ctype.h>
 #include <stdio.h>
@@ -216,9 +218,11 @@ static void same_run_in_two_unit_systems(void **state)
     int rc = tk_run_mpm("figures/fig1/dcb_half.cfg -q -o " MM " run.time=40.0 "
                         "run.snapshots=4 run.precision=full", out, sizeof out);
     assert_int_equal(rc, 0);
+    assert_non_null(strstr(out, "dt = 0.113347 ms, 353 steps"));
     rc = tk_run_mpm("tests/1-mpm/scenes/dcb_half_si.cfg -q -o " SI " run.time=0.04 "
                     "run.snapshots=4 run.precision=full", out, sizeof out);
-    assert_int_equal(rc, 0);
+    assert_int_equal(rc, 0);                /* units = "SI": its words, its thickness */
+    assert_non_null(strstr(out, "dt = 0.000113347 s, 353 steps"));
     static const char *const csv[] = {"history.csv", "particles_final.csv",
         "grid_00000.csv", "grid_00001.csv", "grid_00002.csv", "grid_00003.csv",
         "grid_00004.csv"};
