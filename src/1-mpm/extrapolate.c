@@ -12,7 +12,7 @@
 
 void load_point_force(const Load *L, double t, double *fx, double *fy)
 {
-    double scale = (L->ramp > 0.0 && t < L->ramp) ? t / L->ramp : 1.0;
+    double scale = ramp_factor(L->ramp, t);
     *fx = scale * L->fx / L->count;
     *fy = scale * L->fy / L->count;
 }

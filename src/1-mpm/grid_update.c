@@ -78,46 +78,57 @@ static void contact_rederive(Grid *g, int s, int task4, double idt)
     }
 }
 
-/** The velocity boundary @p B holds at time @p t (ramped from zero). */
-static void held_velocity(const Boundary *B, double t, double v[2])
+/** Hold every field of @p node at velocity @p v along the directions of
+ *  @p fix; at Task 4 (@p task4) with the force that took it from @p v0. */
+static void hold_node(Grid *g, const FieldTable *F, int node, unsigned fix,
+                      const double v0[2], const double v[2], int task4, double dt)
 {
-    double scale = (B->ramp > 0.0 && t < B->ramp) ? t / B->ramp : 1.0;
-    v[0] = scale * B->vx;
-    v[1] = scale * B->vy;
+    for (int s = node; s >= 0; s = field_next(F, g, s)) {
+        double m = g->m[s];
+        if (fix & GRID_FIX_X) {
+            g->px[s] = m * v[0];
+            g->vx[s] = v[0];
+            if (task4) {                              /* f = m dv / dt */
+                g->ax[s] = (v[0] - v0[0]) / dt;
+                g->fx[s] = m * g->ax[s];
+            }
+        }
+        if (fix & GRID_FIX_Y) {
+            g->py[s] = m * v[1];
+            g->vy[s] = v[1];
+            if (task4) {
+                g->ay[s] = (v[1] - v0[1]) / dt;
+                g->fy[s] = m * g->ay[s];
+            }
+        }
+    }
 }
 
 /// [grid_prescribe]
 void grid_prescribe(Sim *sim, Seam seam)
 {
-    if (sim->nmoving == 0)
+    const Scene *sc = &sim->scene;
+    if (sim->nmoving == 0 && sc->nheld == 0)
         return;
     Grid *g = &sim->grid;
     const FieldTable *F = &sim->fields;
-    int task2 = seam == SEAM_TASK2_CONTACT, task4 = seam == SEAM_TASK4_CONTACT;
-    double dt = sim->dt;
-    for (int k = 0; k < sim->nmoving; k++) {
-        const Boundary *B = &sim->scene.bc[sim->moving_bc[k]];
-        double v0[2], v[2];
-        held_velocity(B, sim->t, v0);                 /* Task 2: time t */
-        held_velocity(B, task2 ? sim->t : sim->t + dt, v);   /* then t + dt */
-        for (int s = sim->moving[k]; s >= 0; s = field_next(F, g, s)) {
-            double m = g->m[s];
-            if (B->fix & GRID_FIX_X) {
-                g->px[s] = m * v[0];
-                g->vx[s] = v[0];
-                if (task4) {                          /* f = m dv / dt */
-                    g->ax[s] = (v[0] - v0[0]) / dt;
-                    g->fx[s] = m * g->ax[s];
-                }
-            }
-            if (B->fix & GRID_FIX_Y) {
-                g->py[s] = m * v[1];
-                g->vy[s] = v[1];
-                if (task4) {
-                    g->ay[s] = (v[1] - v0[1]) / dt;
-                    g->fy[s] = m * g->ay[s];
-                }
-            }
+    int task4 = seam == SEAM_TASK4_CONTACT;
+    double t0 = sim->t, t = seam == SEAM_TASK2_CONTACT ? t0 : t0 + sim->dt;
+    for (int k = 0; k < sim->nmoving; k++) {          /* moving boundaries */
+        const Boundary *B = &sc->bc[sim->moving_bc[k]];
+        double v0[2] = {ramp_factor(B->ramp, t0) * B->vx, ramp_factor(B->ramp, t0) * B->vy};
+        double v[2] = {ramp_factor(B->ramp, t) * B->vx, ramp_factor(B->ramp, t) * B->vy};
+        hold_node(g, F, sim->moving[k], B->fix, v0, v, task4, sim->dt);
+    }
+    for (int k = 0; k < sc->nheld; k++) {             /* the nodes of held points */
+        const HeldPoints *H = &sc->held[k];
+        double v0[2] = {ramp_factor(H->ramp, t0) * H->vx, ramp_factor(H->ramp, t0) * H->vy};
+        double v[2] = {ramp_factor(H->ramp, t) * H->vx, ramp_factor(H->ramp, t) * H->vy};
+        for (int j = 0; j < H->count; j++) {
+            int node[STENCIL_NODES];
+            stencil_nodes(sim, H->points[j], node);
+            for (int a = 0; a < STENCIL_NODES; a++)
+                hold_node(g, F, node[a], H->fix, v0, v, task4, sim->dt);
         }
     }
 }

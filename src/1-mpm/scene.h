@@ -72,6 +72,19 @@ typedef struct Load {
     int line;          /**< scene-file line, for messages */
 } Load;
 
+/** Points inside a box whose velocity is prescribed along x and/or y,
+ *  ramped in from zero: the nodes they reach are held at it. */
+typedef struct HeldPoints {
+    Shape region;      /**< rectangle selecting the points at t = 0 */
+    unsigned fix;      /**< GRID_FIX_X | GRID_FIX_Y: the directions held */
+    double vx;         /**< velocity along x (if held in x) */
+    double vy;         /**< velocity along y (if held in y) */
+    double ramp;       /**< time to reach full velocity; 0 = at once */
+    int count;         /**< number of points held */
+    int *points;       /**< their indices */
+    int line;          /**< scene-file line, for messages */
+} HeldPoints;
+
 /** A stress-update scheme: where in the step the stress is updated. */
 typedef struct UpdateScheme {
     const char *name;   /**< name in the scene file (run.update) */
@@ -119,7 +132,16 @@ typedef struct Scene {
     Boundary *bc;       /**< grid boundary conditions */
     int nloads;         /**< number of point loads */
     Load *loads;        /**< point loads */
+    int nheld;          /**< number of point_velocities entries */
+    HeldPoints *held;   /**< points whose velocity is prescribed */
 } Scene;
+
+/** @brief The share of a load or prescribed velocity reached at time @p t
+ *         when it is ramped in linearly over @p ramp (0: all at once). */
+static inline double ramp_factor(double ramp, double t)
+{
+    return (ramp > 0.0 && t < ramp) ? t / ramp : 1.0;
+}
 
 /** @brief Release what the scene allocated. */
 void scene_free(Scene *sc);

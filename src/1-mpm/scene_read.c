@@ -620,6 +620,13 @@ static int read_regions(SceneReader *r, const config_setting_t *root,
     return 1;
 }
 
+/** "x", "y" or "xy" into GRID_FIX_ bits; 0 for anything else. */
+static unsigned fix_bits(const char *fix)
+{
+    return strcmp(fix, "x") == 0 ? GRID_FIX_X : strcmp(fix, "y") == 0 ? GRID_FIX_Y
+         : strcmp(fix, "xy") == 0 ? GRID_FIX_X | GRID_FIX_Y : 0u;
+}
+
 static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
     static const char *const keys[] = {"rectangle", "fix", "velocity", "ramp", NULL};
@@ -640,13 +647,8 @@ static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *roo
             scene_pair(r, g, "velocity", 0, v) < 0 ||
             scene_number(r, g, "ramp", 0, 0.0, &B->ramp) < 0)
             return -1;
-        if (strcmp(fix, "x") == 0)
-            sc->bc[k].fix = GRID_FIX_X;
-        else if (strcmp(fix, "y") == 0)
-            sc->bc[k].fix = GRID_FIX_Y;
-        else if (strcmp(fix, "xy") == 0)
-            sc->bc[k].fix = GRID_FIX_X | GRID_FIX_Y;
-        else
+        B->fix = fix_bits(fix);
+        if (!B->fix)
             return scene_error(r, config_setting_get_member(g, "fix"), "fix",
                                "\"%s\": expected \"x\", \"y\" or \"xy\"", fix);
         if ((v[0] != 0.0 && !(B->fix & GRID_FIX_X)) ||
@@ -691,10 +693,48 @@ static int read_loads(Sim *sim, SceneReader *r, const config_setting_t *root)
     return 0;
 }
 
+static int read_held_points(Sim *sim, SceneReader *r, const config_setting_t *root)
+{
+    static const char *const keys[] = {"rectangle", "fix", "velocity", "ramp", NULL};
+    Scene *sc = &sim->scene;
+    int st = read_regions(r, root, "point_velocities", &sc->nheld, (void **)&sc->held,
+                          sizeof(HeldPoints));
+    if (st <= 0)
+        return st;
+    const config_setting_t *l = config_setting_get_member(root, "point_velocities");
+    for (int k = 0; k < sc->nheld; k++) {
+        const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
+        HeldPoints *H = &sc->held[k];
+        const char *fix = "xy";
+        double v[2];
+        H->line = (int)config_setting_source_line(g);
+        if (scene_check_keys(r, g, keys) || scene_shape(r, g, &H->region) < 0 ||
+            scene_string(r, g, "fix", 0, &fix) < 0 ||
+            scene_pair(r, g, "velocity", 1, v) < 0 ||
+            scene_number(r, g, "ramp", 0, 0.0, &H->ramp) < 0)
+            return -1;
+        H->fix = fix_bits(fix);
+        if (!H->fix)
+            return scene_error(r, config_setting_get_member(g, "fix"), "fix",
+                               "\"%s\": expected \"x\", \"y\" or \"xy\"", fix);
+        if ((v[0] != 0.0 && !(H->fix & GRID_FIX_X)) ||
+            (v[1] != 0.0 && !(H->fix & GRID_FIX_Y)))
+            return scene_error(r, config_setting_get_member(g, "velocity"), "velocity",
+                               "[%g, %g] moves a direction that fix = \"%s\" leaves "
+                               "free", v[0], v[1], fix);
+        if (!(H->ramp >= 0))
+            return scene_error(r, config_setting_get_member(g, "ramp"), "ramp",
+                               "%g must be >= 0", H->ramp);
+        H->vx = v[0];
+        H->vy = v[1];
+    }
+    return 0;
+}
+
 int scene_read(Sim *sim, const config_t *cfg, SceneReader *r)
 {
     static const char *const core[] = {"grid", "run", "materials", "bodies",
-                                       "boundaries", "loads", NULL};
+                                       "boundaries", "loads", "point_velocities", NULL};
     const config_setting_t *root = config_root_setting(cfg);
     snprintf(sim->scene.file, sizeof sim->scene.file, "%s", r->file);
     /* every top-level key: ours, a stage's section, a later stage's, or a typo */
@@ -718,7 +758,8 @@ int scene_read(Sim *sim, const config_t *cfg, SceneReader *r)
     }
     if (read_grid(sim, r, root) || read_run(sim, r, root) ||
         read_materials(sim, r, root) || read_bodies(sim, r, root) ||
-        read_boundaries(sim, r, root) || read_loads(sim, r, root))
+        read_boundaries(sim, r, root) || read_loads(sim, r, root) ||
+        read_held_points(sim, r, root))
         return -1;
     /* the stages' sections, in stage order */
     return scene_read_open_keys(sim, r, "", root, 0);

@@ -188,6 +188,38 @@ int setup_loads(Sim *sim, char *err, size_t errlen)
     return 0;
 }
 
+int setup_held_points(Sim *sim, char *err, size_t errlen)
+{
+    Scene *sc = &sim->scene;
+    Particles *P = &sim->pts;
+    for (int k = 0; k < sc->nheld; k++) {
+        HeldPoints *H = &sc->held[k];
+        H->points = malloc(sizeof(int) * (size_t)(P->n + 1));
+        if (!H->points) {
+            snprintf(err, errlen, "%s: out of memory", sc->file);
+            return -1;
+        }
+        double v[2] = {ramp_factor(H->ramp, 0.0) * H->vx,
+                       ramp_factor(H->ramp, 0.0) * H->vy};
+        H->count = 0;
+        for (int p = 0; p < P->n; p++)
+            if (shape_contains(&H->region, P->x[p], P->y[p])) {
+                H->points[H->count++] = p;
+                if (H->fix & GRID_FIX_X)         /* they start at it */
+                    P->vx[p] = v[0];
+                if (H->fix & GRID_FIX_Y)
+                    P->vy[p] = v[1];
+            }
+        if (H->count == 0) {
+            snprintf(err, errlen, "%s:%d: point_velocities: no material point lies "
+                     "in [%g, %g] x [%g, %g]", sc->file, H->line, H->region.xmin,
+                     H->region.xmax, H->region.ymin, H->region.ymax);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 /// [sim_set_time_step]
 void sim_set_time_step(Sim *sim)
 {

@@ -20,4 +20,9 @@ int setup_grid(Sim *sim, char *err, size_t errlen);
 /** @brief Find the points each load acts on. @return 0 or -1. */
 int setup_loads(Sim *sim, char *err, size_t errlen);
 
+/** @brief Select the points of each point_velocities box and give them its
+ *         velocity at t = 0. @return 0, or -1 with a message (a box that
+ *         holds no point, out of memory) in @p err. */
+int setup_held_points(Sim *sim, char *err, size_t errlen);
+
 #endif

@@ -37,6 +37,13 @@ void scene_free(Scene *sc)
         free(sc->loads[k].region.v);
         free(sc->loads[k].points);
     }
+    for (int k = 0; k < sc->nheld; k++) {
+        free(sc->held[k].region.v);
+        free(sc->held[k].points);
+    }
+    free(sc->held);
+    sc->held = NULL;
+    sc->nheld = 0;
     free(sc->mat);
     free(sc->bodies);
     free(sc->bc);
