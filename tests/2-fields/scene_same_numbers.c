@@ -36,6 +36,7 @@ static const SameCase cases[] = {
     {"tests/1-mpm/scenes/disks.cfg", "0.12", 1},
     {"tests/1-mpm/scenes/spinning_disk.cfg", "0.02", 1},
     {"tests/1-mpm/scenes/dcb_half_si.cfg", "0.006", 1},
+    {"tests/1-mpm/scenes/driven_bar.cfg", "0.02", 1},
     {"tests/1-mpm/scenes/usl_unstable.cfg", "32.0", 1},
     {"chapters/1-mpm/example.cfg", "6.0", 1},
     {"figures/fig1/dcb_half.cfg", "6.0", 1},
