@@ -6,7 +6,6 @@
 #include "scene_read.h"
 
 #include <ctype.h>
-#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -767,6 +766,37 @@ int scene_read(Sim *sim, const config_t *cfg, SceneReader *r)
 
 /* ---- command-line overrides "a.b.c=value" -------------------------------- */
 
+/** Add a copy of @p from to @p parent under @p name (NULL inside an array
+ *  or list): scalars, arrays, lists and groups. NULL when it cannot. */
+static config_setting_t *copy_setting(config_setting_t *parent, const char *name,
+                                      const config_setting_t *from)
+{
+    int type = config_setting_type(from);
+    config_setting_t *s = config_setting_add(parent, name, type);
+    if (!s)
+        return NULL;
+    switch (type) {
+    case CONFIG_TYPE_INT:
+        return config_setting_set_int(s, config_setting_get_int(from)) ? s : NULL;
+    case CONFIG_TYPE_INT64:
+        return config_setting_set_int64(s, config_setting_get_int64(from)) ? s : NULL;
+    case CONFIG_TYPE_FLOAT:
+        return config_setting_set_float(s, config_setting_get_float(from)) ? s : NULL;
+    case CONFIG_TYPE_BOOL:
+        return config_setting_set_bool(s, config_setting_get_bool(from)) ? s : NULL;
+    case CONFIG_TYPE_STRING:
+        return config_setting_set_string(s, config_setting_get_string(from)) ? s : NULL;
+    default:                                  /* array, list, group */
+        for (int k = 0; k < config_setting_length(from); k++) {
+            const config_setting_t *e = config_setting_get_elem(from, (unsigned)k);
+            if (!copy_setting(s, type == CONFIG_TYPE_GROUP ? config_setting_name(e)
+                                                           : NULL, e))
+                return NULL;
+        }
+        return s;
+    }
+}
+
 int scene_override(config_t *cfg, const char *assignment, char *err,
                    size_t errlen)
 {
@@ -797,30 +827,23 @@ int scene_override(config_t *cfg, const char *assignment, char *err,
     }
     if (config_setting_get_member(parent, name))
         config_setting_remove(parent, name);
-    char *end;
-    errno = 0;
-    long iv = strtol(value, &end, 10);
-    config_setting_t *s;
-    if (*value && !*end && errno == 0) {
-        s = config_setting_add(parent, name, CONFIG_TYPE_INT64);
-        if (s)
-            config_setting_set_int64(s, iv);
-    } else {
-        double dv = strtod(value, &end);
-        if (*value && !*end) {
-            s = config_setting_add(parent, name, CONFIG_TYPE_FLOAT);
-            if (s)
-                config_setting_set_float(s, dv);
-        } else if (strcmp(value, "true") == 0 || strcmp(value, "false") == 0) {
-            s = config_setting_add(parent, name, CONFIG_TYPE_BOOL);
-            if (s)
-                config_setting_set_bool(s, value[0] == 't');
-        } else {
-            s = config_setting_add(parent, name, CONFIG_TYPE_STRING);
-            if (s)
-                config_setting_set_string(s, value);
-        }
+    /* the value as libconfig reads it (a number, true, "text", [a, b], ...);
+       a bare word that it does not read is a string (run.update=usf) */
+    size_t len = strlen(value) + 16;
+    char *text = malloc(len);
+    config_t one;
+    config_init(&one);
+    config_setting_t *s = NULL;
+    if (text) {
+        snprintf(text, len, "v = %s;", value);
+        if (*value && config_read_string(&one, text) == CONFIG_TRUE)
+            s = copy_setting(parent, name, config_lookup(&one, "v"));
+        else if ((s = config_setting_add(parent, name, CONFIG_TYPE_STRING)) != NULL &&
+                 !config_setting_set_string(s, value))
+            s = NULL;
     }
+    config_destroy(&one);
+    free(text);
     if (!s) {
         snprintf(err, errlen, "override \"%s\": cannot set \"%s\"", assignment, name);
         return -1;
