@@ -115,20 +115,22 @@ void grid_prescribe(Sim *sim, Seam seam)
     int task4 = seam == SEAM_TASK4_CONTACT;
     double t0 = sim->t, t = seam == SEAM_TASK2_CONTACT ? t0 : t0 + sim->dt;
     for (int k = 0; k < sim->nmoving; k++) {          /* moving boundaries */
-        const Boundary *B = &sc->bc[sim->moving_bc[k]];
-        double v0[2] = {ramp_factor(B->ramp, t0) * B->vx, ramp_factor(B->ramp, t0) * B->vy};
-        double v[2] = {ramp_factor(B->ramp, t) * B->vx, ramp_factor(B->ramp, t) * B->vy};
-        hold_node(g, F, sim->moving[k], B->fix, v0, v, task4, sim->dt);
+        const Hold *h = &sc->bc[sim->moving_bc[k]].hold;
+        double v0[2], v[2];
+        hold_velocity(h, t0, v0);
+        hold_velocity(h, t, v);
+        hold_node(g, F, sim->moving[k], h->fix, v0, v, task4, sim->dt);
     }
     for (int k = 0; k < sc->nheld; k++) {             /* the nodes of held points */
         const HeldPoints *H = &sc->held[k];
-        double v0[2] = {ramp_factor(H->ramp, t0) * H->vx, ramp_factor(H->ramp, t0) * H->vy};
-        double v[2] = {ramp_factor(H->ramp, t) * H->vx, ramp_factor(H->ramp, t) * H->vy};
+        double v0[2], v[2];
+        hold_velocity(&H->hold, t0, v0);
+        hold_velocity(&H->hold, t, v);
         for (int j = 0; j < H->count; j++) {
             int node[STENCIL_NODES];
             stencil_nodes(sim, H->points[j], node);
             for (int a = 0; a < STENCIL_NODES; a++)
-                hold_node(g, F, node[a], H->fix, v0, v, task4, sim->dt);
+                hold_node(g, F, node[a], H->hold.fix, v0, v, task4, sim->dt);
         }
     }
 }

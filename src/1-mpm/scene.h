@@ -49,14 +49,19 @@ typedef struct Body {
     int line;          /**< scene-file line, for messages */
 } Body;
 
+/** A velocity held along x and/or y, ramped in from zero. */
+typedef struct Hold {
+    unsigned fix;      /**< GRID_FIX_X | GRID_FIX_Y: the directions held */
+    double vx;         /**< velocity held along x (if held in x) */
+    double vy;         /**< velocity held along y (if held in y) */
+    double ramp;       /**< time to reach full velocity; 0 = at once */
+} Hold;
+
 /** Nodes inside a box whose velocity is held along x and/or y: at zero,
- *  or at a prescribed velocity, ramped in from zero. */
+ *  or at a prescribed velocity. */
 typedef struct Boundary {
     Shape region;      /**< rectangle: nodes in it (edges included) are held */
-    unsigned fix;      /**< GRID_FIX_X | GRID_FIX_Y: the directions held */
-    double vx;         /**< velocity held along x (if fixed in x) */
-    double vy;         /**< velocity held along y (if fixed in y) */
-    double ramp;       /**< time to reach full velocity (ms); 0 = at once */
+    Hold hold;         /**< the directions and the velocity */
     int moving;        /**< a velocity other than zero is prescribed */
     int line;          /**< scene-file line, for messages */
 } Boundary;
@@ -76,10 +81,7 @@ typedef struct Load {
  *  ramped in from zero: the nodes they reach are held at it. */
 typedef struct HeldPoints {
     Shape region;      /**< rectangle selecting the points at t = 0 */
-    unsigned fix;      /**< GRID_FIX_X | GRID_FIX_Y: the directions held */
-    double vx;         /**< velocity along x (if held in x) */
-    double vy;         /**< velocity along y (if held in y) */
-    double ramp;       /**< time to reach full velocity; 0 = at once */
+    Hold hold;         /**< the directions and the velocity */
     int count;         /**< number of points held */
     int *points;       /**< their indices */
     int line;          /**< scene-file line, for messages */
@@ -141,6 +143,13 @@ typedef struct Scene {
 static inline double ramp_factor(double ramp, double t)
 {
     return (ramp > 0.0 && t < ramp) ? t / ramp : 1.0;
+}
+
+/** @brief The velocity @p h holds at time @p t. */
+static inline void hold_velocity(const Hold *h, double t, double v[2])
+{
+    v[0] = ramp_factor(h->ramp, t) * h->vx;
+    v[1] = ramp_factor(h->ramp, t) * h->vy;
 }
 
 /** @brief Release what the scene allocated. */

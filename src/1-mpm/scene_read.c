@@ -626,6 +626,34 @@ static unsigned fix_bits(const char *fix)
          : strcmp(fix, "xy") == 0 ? GRID_FIX_X | GRID_FIX_Y : 0u;
 }
 
+/** The hold of group @p g: fix ("x", "y", "xy"; @p fix_default when not
+ *  given, NULL: required), velocity (required when @p need_velocity; only
+ *  along held directions) and ramp (>= 0). */
+static int read_hold(SceneReader *r, const config_setting_t *g,
+                     const char *fix_default, int need_velocity, Hold *h)
+{
+    const char *fix = fix_default;
+    double v[2] = {0.0, 0.0};
+    if (scene_string(r, g, "fix", fix_default == NULL, &fix) < 0 ||
+        scene_pair(r, g, "velocity", need_velocity, v) < 0 ||
+        scene_number(r, g, "ramp", 0, 0.0, &h->ramp) < 0)
+        return -1;
+    h->fix = fix_bits(fix);
+    if (!h->fix)
+        return scene_error(r, config_setting_get_member(g, "fix"), "fix",
+                           "\"%s\": expected \"x\", \"y\" or \"xy\"", fix);
+    if ((v[0] != 0.0 && !(h->fix & GRID_FIX_X)) || (v[1] != 0.0 && !(h->fix & GRID_FIX_Y)))
+        return scene_error(r, config_setting_get_member(g, "velocity"), "velocity",
+                           "[%g, %g] moves a direction that fix = \"%s\" leaves "
+                           "free", v[0], v[1], fix);
+    if (!(h->ramp >= 0.0))
+        return scene_error(r, config_setting_get_member(g, "ramp"), "ramp",
+                           "%g must be >= 0", h->ramp);
+    h->vx = v[0];
+    h->vy = v[1];
+    return 0;
+}
+
 static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
     static const char *const keys[] = {"rectangle", "fix", "velocity", "ramp", NULL};
@@ -637,30 +665,12 @@ static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *roo
     const config_setting_t *l = config_setting_get_member(root, "boundaries");
     for (int k = 0; k < sc->nbc; k++) {
         const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
-        const char *fix;
         Boundary *B = &sc->bc[k];
-        double v[2] = {0.0, 0.0};
         B->line = (int)config_setting_source_line(g);
         if (scene_check_keys(r, g, keys) || scene_shape(r, g, &B->region) < 0 ||
-            scene_string(r, g, "fix", 1, &fix) < 0 ||
-            scene_pair(r, g, "velocity", 0, v) < 0 ||
-            scene_number(r, g, "ramp", 0, 0.0, &B->ramp) < 0)
+            read_hold(r, g, NULL, 0, &B->hold))
             return -1;
-        B->fix = fix_bits(fix);
-        if (!B->fix)
-            return scene_error(r, config_setting_get_member(g, "fix"), "fix",
-                               "\"%s\": expected \"x\", \"y\" or \"xy\"", fix);
-        if ((v[0] != 0.0 && !(B->fix & GRID_FIX_X)) ||
-            (v[1] != 0.0 && !(B->fix & GRID_FIX_Y)))
-            return scene_error(r, config_setting_get_member(g, "velocity"), "velocity",
-                               "[%g, %g] moves a direction that fix = \"%s\" leaves "
-                               "free", v[0], v[1], fix);
-        if (!(B->ramp >= 0.0))
-            return scene_error(r, config_setting_get_member(g, "ramp"), "ramp",
-                               "%g must be >= 0", B->ramp);
-        B->vx = v[0];
-        B->vy = v[1];
-        B->moving = v[0] != 0.0 || v[1] != 0.0;
+        B->moving = B->hold.vx != 0.0 || B->hold.vy != 0.0;
     }
     return 0;
 }
@@ -704,28 +714,10 @@ static int read_held_points(Sim *sim, SceneReader *r, const config_setting_t *ro
     for (int k = 0; k < sc->nheld; k++) {
         const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
         HeldPoints *H = &sc->held[k];
-        const char *fix = "xy";
-        double v[2];
         H->line = (int)config_setting_source_line(g);
         if (scene_check_keys(r, g, keys) || scene_shape(r, g, &H->region) < 0 ||
-            scene_string(r, g, "fix", 0, &fix) < 0 ||
-            scene_pair(r, g, "velocity", 1, v) < 0 ||
-            scene_number(r, g, "ramp", 0, 0.0, &H->ramp) < 0)
+            read_hold(r, g, "xy", 1, &H->hold))
             return -1;
-        H->fix = fix_bits(fix);
-        if (!H->fix)
-            return scene_error(r, config_setting_get_member(g, "fix"), "fix",
-                               "\"%s\": expected \"x\", \"y\" or \"xy\"", fix);
-        if ((v[0] != 0.0 && !(H->fix & GRID_FIX_X)) ||
-            (v[1] != 0.0 && !(H->fix & GRID_FIX_Y)))
-            return scene_error(r, config_setting_get_member(g, "velocity"), "velocity",
-                               "[%g, %g] moves a direction that fix = \"%s\" leaves "
-                               "free", v[0], v[1], fix);
-        if (!(H->ramp >= 0))
-            return scene_error(r, config_setting_get_member(g, "ramp"), "ramp",
-                               "%g must be >= 0", H->ramp);
-        H->vx = v[0];
-        H->vy = v[1];
     }
     return 0;
 }

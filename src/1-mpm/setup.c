@@ -141,7 +141,7 @@ int setup_grid(Sim *sim, char *err, size_t errlen)
                 free(owner);
                 return -1;
             }
-            g->fixed[n] |= (unsigned char)B->fix;
+            g->fixed[n] |= (unsigned char)B->hold.fix;
             owner[n] = k;
             sim->nmoving += B->moving;
         }
@@ -163,27 +163,41 @@ int setup_grid(Sim *sim, char *err, size_t errlen)
     return 0;
 }
 
+/** The points inside @p region, into a new array @p *points (the caller
+ *  frees it); their number, or -1 out of memory. */
+static int points_in(const Particles *P, const Shape *region, int **points)
+{
+    *points = malloc(sizeof(int) * (size_t)(P->n + 1));
+    if (!*points)
+        return -1;
+    int count = 0;
+    for (int p = 0; p < P->n; p++)
+        if (shape_contains(region, P->x[p], P->y[p]))
+            (*points)[count++] = p;
+    return count;
+}
+
+/** The message for a box (of @p what, at @p line) that holds no point. */
+static int no_point_in(const Scene *sc, const char *what, int line,
+                       const Shape *r, char *err, size_t errlen)
+{
+    snprintf(err, errlen, "%s:%d: %s: no material point lies in [%g, %g] x "
+             "[%g, %g]", sc->file, line, what, r->xmin, r->xmax, r->ymin, r->ymax);
+    return -1;
+}
+
 int setup_loads(Sim *sim, char *err, size_t errlen)
 {
     Scene *sc = &sim->scene;
-    const Particles *P = &sim->pts;
     for (int l = 0; l < sc->nloads; l++) {
         Load *L = &sc->loads[l];
-        L->points = malloc(sizeof(int) * (size_t)(P->n + 1));
-        if (!L->points) {
+        L->count = points_in(&sim->pts, &L->region, &L->points);
+        if (L->count < 0) {
             snprintf(err, errlen, "%s: out of memory", sc->file);
             return -1;
         }
-        L->count = 0;
-        for (int p = 0; p < P->n; p++)
-            if (shape_contains(&L->region, P->x[p], P->y[p]))
-                L->points[L->count++] = p;
-        if (L->count == 0) {
-            snprintf(err, errlen, "%s:%d: load: no material point lies in "
-                     "[%g, %g] x [%g, %g]", sc->file, L->line, L->region.xmin,
-                     L->region.xmax, L->region.ymin, L->region.ymax);
-            return -1;
-        }
+        if (L->count == 0)
+            return no_point_in(sc, "load", L->line, &L->region, err, errlen);
     }
     return 0;
 }
@@ -194,27 +208,21 @@ int setup_held_points(Sim *sim, char *err, size_t errlen)
     Particles *P = &sim->pts;
     for (int k = 0; k < sc->nheld; k++) {
         HeldPoints *H = &sc->held[k];
-        H->points = malloc(sizeof(int) * (size_t)(P->n + 1));
-        if (!H->points) {
+        H->count = points_in(P, &H->region, &H->points);
+        if (H->count < 0) {
             snprintf(err, errlen, "%s: out of memory", sc->file);
             return -1;
         }
-        double v[2] = {ramp_factor(H->ramp, 0.0) * H->vx,
-                       ramp_factor(H->ramp, 0.0) * H->vy};
-        H->count = 0;
-        for (int p = 0; p < P->n; p++)
-            if (shape_contains(&H->region, P->x[p], P->y[p])) {
-                H->points[H->count++] = p;
-                if (H->fix & GRID_FIX_X)         /* they start at it */
-                    P->vx[p] = v[0];
-                if (H->fix & GRID_FIX_Y)
-                    P->vy[p] = v[1];
-            }
-        if (H->count == 0) {
-            snprintf(err, errlen, "%s:%d: point_velocities: no material point lies "
-                     "in [%g, %g] x [%g, %g]", sc->file, H->line, H->region.xmin,
-                     H->region.xmax, H->region.ymin, H->region.ymax);
-            return -1;
+        if (H->count == 0)
+            return no_point_in(sc, "point_velocities", H->line, &H->region, err,
+                               errlen);
+        double v[2];
+        hold_velocity(&H->hold, 0.0, v);
+        for (int j = 0; j < H->count; j++) {    /* they start at it */
+            if (H->hold.fix & GRID_FIX_X)
+                P->vx[H->points[j]] = v[0];
+            if (H->hold.fix & GRID_FIX_Y)
+                P->vy[H->points[j]] = v[1];
         }
     }
     return 0;
