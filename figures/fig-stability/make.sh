@@ -67,8 +67,8 @@ for n in $PPCS; do
 done
 body_of() {  # body_of PPC POINT: the body's name
     local idx
-    idx=$(awk -F, -v p="$2" 'NR == 1 { for (k = 1; k <= NF; k++) if ($k == "body") c = k }
-                            NR == p + 2 { print $c }' "$RUNS/layout-p$1/particles_final.csv")
+    idx=$(awk -F, -v p="$2" 'NR == 2 { for (k = 1; k <= NF; k++) if ($k == "body") c = k }
+                            NR == p + 3 { print $c }' "$RUNS/layout-p$1/particles_final.csv")
     awk -v i="$idx" '/^ *\{ *name *=/ { if (n++ == i) { sub(/.*name *= *"/, ""); sub(/".*/, ""); print } }' \
         <(sed -n '/^bodies/,/^);/p' "$SCENE")
 }

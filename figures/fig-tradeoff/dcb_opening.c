@@ -62,8 +62,8 @@ static int final_y(const char *dir, int p, double *y)
 {
     char path[1024], line[4096];
     snprintf(path, sizeof path, "%s/particles_final.csv", dir);
-    FILE *f = fopen(path, "r");
-    if (!f || !fgets(line, sizeof line, f)) {
+    FILE *f = fopen(path, "r");                 /* "# t = ...", then the names */
+    if (!f || !fgets(line, sizeof line, f) || !fgets(line, sizeof line, f)) {
         fprintf(stderr, "dcb_opening: cannot read %s\n", path);
         if (f)
             fclose(f);

@@ -15,5 +15,5 @@ m = (abs(STATS_min) > abs(STATS_max)) ? abs(STATS_min) : abs(STATS_max)
 set cbrange [-m:m]
 set palette defined (-1 "#2040c0", 0 "#f0f0f0", 1 "#c02020")
 set key off
-plot points using 1:2:5 skip 1 with points pt 5 ps 0.55 palette, \
-     crack using 3:4 skip 1 with lines lw 3 lc "black"
+plot points using 1:2:5 skip 2 with points pt 5 ps 0.55 palette, \
+     crack using 3:4 skip 2 with lines lw 3 lc "black"

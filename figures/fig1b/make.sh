@@ -29,7 +29,7 @@ t1=$(date +%s)
 
 # one table: x0, y0, x, y, sigma_xx (same point order in both files)
 paste -d, "$RUN.layout/particles_final.csv" "$RUN/particles_final.csv" |
-    awk -F, 'NR > 1 { print $1 "," $2 "," $14 "," $15 "," $18 }' >"$RUN/points.csv"
+    awk -F, 'NR > 2 { print $1 "," $2 "," $14 "," $15 "," $18 }' >"$RUN/points.csv"
 
 # the opening at the load line (mean y displacement of the loaded strip
 # 0 <= x <= 2) and the static state, as the test measures them

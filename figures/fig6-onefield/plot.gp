@@ -69,8 +69,8 @@ set key top right
 set title "Beam impact layout (Fig. 5): beam (red), impactor (blue), fixed-y support nodes (green)"
 lay = runs.'/layout/particles_final.csv'
 # particles_final.csv: x,y,vx,vy,...,mass,material,body (body in column 13)
-plot lay skip 1 using 1:($13 == 0 ? $2 : 1/0) with points pt 7 ps 0.25 lc rgb '#d62728' title 'beam', \
-     lay skip 1 using 1:($13 == 1 ? $2 : 1/0) with points pt 7 ps 0.25 lc rgb '#1f3fbf' title 'impactor', \
+plot lay skip 2 using 1:($13 == 0 ? $2 : 1/0) with points pt 7 ps 0.25 lc rgb '#d62728' title 'beam', \
+     lay skip 2 using 1:($13 == 1 ? $2 : 1/0) with points pt 7 ps 0.25 lc rgb '#1f3fbf' title 'impactor', \
      '-' using 1:2 with points pt 9 ps 2.5 lc rgb '#2ca02c' title 'support (v_y = 0)'
 -34,-0.9
 34,-0.9

@@ -71,9 +71,9 @@ set key top right
 set title "Beam impact layout (Fig. 5): beam (red), impactor (blue), supports (green), fixed nodes (squares)"
 lay = runs.'/layout/particles_final.csv'
 # particles_final.csv: x,y,vx,vy,...,mass,material,body (body in column 13)
-plot lay skip 1 using 1:($13 == 0 ? $2 : 1/0) with points pt 7 ps 0.25 lc rgb '#d62728' title 'beam', \
-     lay skip 1 using 1:($13 == 1 ? $2 : 1/0) with points pt 7 ps 0.25 lc rgb '#1f3fbf' title 'impactor', \
-     lay skip 1 using 1:($13 >= 2 ? $2 : 1/0) with points pt 7 ps 0.25 lc rgb '#2ca02c' title 'supports', \
+plot lay skip 2 using 1:($13 == 0 ? $2 : 1/0) with points pt 7 ps 0.25 lc rgb '#d62728' title 'beam', \
+     lay skip 2 using 1:($13 == 1 ? $2 : 1/0) with points pt 7 ps 0.25 lc rgb '#1f3fbf' title 'impactor', \
+     lay skip 2 using 1:($13 >= 2 ? $2 : 1/0) with points pt 7 ps 0.25 lc rgb '#2ca02c' title 'supports', \
      '-' using 1:2 with points pt 4 ps 1 lc rgb '#555555' title 'fixed nodes (x, y)'
 -37,-5
 -36,-5

@@ -27,6 +27,12 @@ int output_make_dir(const char *dir)
     return 0;
 }
 
+void output_csv_time(const Sim *sim, FILE *f)
+{
+    fprintf(f, "# t = %.17g %s, step %ld\n", sim->t, sim->scene.run.units->time,
+            sim->step);
+}
+
 /** The stages' columns of history.csv (SEAM_HISTORY, in order). */
 static int history_columns(const Sim *sim, FILE *f, int header)
 {
@@ -154,6 +160,7 @@ int output_grid_csv(Sim *sim, const char *path)
     if (!f)
         return -1;
     int d = output_digits(sim, 10);
+    output_csv_time(sim, f);
     fprintf(f, "x,y,mass,sigma_xx,sigma_yy,sigma_xy\n");
     for (int n = 0; n < g->nnodes; n++) {
         if (g->m[n] <= 0)
@@ -173,6 +180,7 @@ int output_points_csv(const Sim *sim, const char *path)
     FILE *f = fopen(path, "w");
     if (!f)
         return -1;
+    output_csv_time(sim, f);
     fprintf(f, "x,y,vx,vy,sigma_xx,sigma_yy,sigma_xy,eps_xx,eps_yy,eps_xy,"
                "mass,material,body\n");
     int d = output_digits(sim, 10), dx = output_digits(sim, 12);

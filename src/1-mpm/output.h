@@ -18,6 +18,10 @@ static inline int output_digits(const Sim *sim, int usual)
     return sim->scene.run.full_precision ? 17 : usual;
 }
 
+/** @brief The first line of every CSV snapshot: "# t = T UNIT, step N"
+ *         (a comment to gnuplot; the column names follow). */
+void output_csv_time(const Sim *sim, FILE *f);
+
 /** @brief Create @p dir and its parents if missing. @return 0 or -1. */
 int output_make_dir(const char *dir);
 

@@ -25,6 +25,7 @@ int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index)
     FILE *f = fopen(path, "w");
     if (!f)
         return -1;
+    output_csv_time(sim, f);
     fprintf(f, "crack,point,x,y\n");
     for (int k = 0; k < C->ncracks; k++)
         for (int j = 0; j < C->crack[k].n; j++)

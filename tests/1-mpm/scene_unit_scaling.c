@@ -89,6 +89,15 @@ static void read_csv(const char *path, Numbers *N)
     int kinds[64], ncol = 0;
     char *line = strtok_r(text, "\n", &save);
     assert_non_null(line);
+    if (strncmp(line, "# t = ", 6) == 0) {    /* a snapshot's time and step */
+        char *unit;
+        push(N, strtod(line + 6, &unit), K_TIME);
+        const char *step = strstr(unit, ", step ");
+        assert_non_null(step);
+        push(N, strtod(step + 7, NULL), K_INT);
+        line = strtok_r(NULL, "\n", &save);
+        assert_non_null(line);
+    }
     for (char *c = line, *end; c; c = end ? end + 1 : NULL) {
         end = strchr(c, ',');
         if (end)

@@ -46,6 +46,8 @@ static void mpm_midplane(double sxx[NX + 1], double *opening)
     char line[512];
     for (int i = 0; i <= NX; i++)
         sxx[i] = NAN;
+    assert_non_null(fgets(line, sizeof line, f));            /* # t = ... */
+    assert_int_equal(line[0], '#');
     assert_non_null(fgets(line, sizeof line, f));            /* header */
     while (fgets(line, sizeof line, f)) {
         double x, y, m, s[3];

@@ -566,8 +566,8 @@ static int read_run(Run *r, const char *dir)
 {
     char path[1024], line[1024];
     snprintf(path, sizeof path, "%s/%s/particles_final.csv", dir, r->name);
-    FILE *f = fopen(path, "r");
-    if (!f || !fgets(line, sizeof line, f)) {
+    FILE *f = fopen(path, "r");                  /* skip "# t = ..." and names */
+    if (!f || !fgets(line, sizeof line, f) || !fgets(line, sizeof line, f)) {
         fprintf(stderr, "cannot read %s\n", path);
         if (f)
             fclose(f);
