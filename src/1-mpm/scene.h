@@ -49,12 +49,16 @@ typedef struct Body {
     int line;          /**< scene-file line, for messages */
 } Body;
 
-/** A velocity held along x and/or y, ramped in from zero. */
+/** A velocity held along x and/or y: constant, ramped in from zero, or
+ *  a table in time. */
 typedef struct Hold {
     unsigned fix;      /**< GRID_FIX_X | GRID_FIX_Y: the directions held */
     double vx;         /**< velocity held along x (if held in x) */
     double vy;         /**< velocity held along y (if held in y) */
     double ramp;       /**< time to reach full velocity; 0 = at once */
+    int nrows;         /**< rows of the table; 0: no table */
+    double *table;     /**< t, vx, vy per row, t increasing: linear between
+                            rows, the first and last row's values outside */
 } Hold;
 
 /** Nodes inside a box whose velocity is held along x and/or y: at zero,
@@ -148,8 +152,21 @@ static inline double ramp_factor(double ramp, double t)
 /** @brief The velocity @p h holds at time @p t. */
 static inline void hold_velocity(const Hold *h, double t, double v[2])
 {
-    v[0] = ramp_factor(h->ramp, t) * h->vx;
-    v[1] = ramp_factor(h->ramp, t) * h->vy;
+    const double *r = h->table;
+    if (h->nrows == 0) {
+        v[0] = ramp_factor(h->ramp, t) * h->vx;
+        v[1] = ramp_factor(h->ramp, t) * h->vy;
+        return;
+    }
+    int k = 0;                                 /* the row at or before t */
+    while (k + 1 < h->nrows && r[3 * (k + 1)] <= t)
+        k++;
+    double w = 0.0;
+    if (k + 1 < h->nrows && t > r[3 * k])
+        w = (t - r[3 * k]) / (r[3 * (k + 1)] - r[3 * k]);
+    const double *a = r + 3 * k, *b = k + 1 < h->nrows ? a + 3 : a;
+    v[0] = (1.0 - w) * a[1] + w * b[1];
+    v[1] = (1.0 - w) * a[2] + w * b[2];
 }
 
 /** @brief Release what the scene allocated. */

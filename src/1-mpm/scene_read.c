@@ -626,24 +626,70 @@ static unsigned fix_bits(const char *fix)
          : strcmp(fix, "xy") == 0 ? GRID_FIX_X | GRID_FIX_Y : 0u;
 }
 
+/** The table of group @p g, "table = ( [t, vx, vy], ... )" with t
+ *  increasing, into @p h (its velocity: the largest |value|, so that a
+ *  table that moves is moving). */
+static int read_hold_table(SceneReader *r, const config_setting_t *g, Hold *h,
+                           double v[2])
+{
+    const config_setting_t *t = config_setting_get_member(g, "table");
+    if (config_setting_type(t) != CONFIG_TYPE_LIST || config_setting_length(t) < 1)
+        return scene_error(r, t, "table", "expected a list of rows ( [t, vx, vy], ... )");
+    h->nrows = config_setting_length(t);
+    h->table = malloc(sizeof(double) * 3 * (size_t)h->nrows);
+    if (!h->table)
+        return scene_error(r, t, "table", "out of memory");
+    for (int k = 0; k < h->nrows; k++) {
+        const config_setting_t *row = config_setting_get_elem(t, (unsigned)k);
+        double *x = h->table + 3 * k;
+        int n = config_setting_type(row) == CONFIG_TYPE_ARRAY ? config_setting_length(row) : 0;
+        for (int j = 0; j < 3 && n == 3; j++) {
+            const config_setting_t *e = config_setting_get_elem(row, (unsigned)j);
+            if (!is_number(e))
+                n = 0;
+            else
+                x[j] = number_of(e);
+        }
+        if (n != 3 || !isfinite(x[0] + x[1] + x[2]))
+            return scene_error(r, row, "table", "row %d: expected three finite "
+                               "numbers [t, vx, vy]", k);
+        if (k > 0 && !(x[0] > x[-3]))
+            return scene_error(r, row, "table", "row %d: time %g does not follow "
+                               "%g", k, x[0], x[-3]);
+        for (int j = 0; j < 2; j++)
+            if (fabs(x[1 + j]) > fabs(v[j]))
+                v[j] = x[1 + j];
+    }
+    return 0;
+}
+
 /** The hold of group @p g: fix ("x", "y", "xy"; @p fix_default when not
- *  given, NULL: required), velocity (required when @p need_velocity; only
- *  along held directions) and ramp (>= 0). */
+ *  given, NULL: required); velocity (required when @p need_velocity,
+ *  unless a table is given) with ramp (>= 0), or a table; only along held
+ *  directions. */
 static int read_hold(SceneReader *r, const config_setting_t *g,
                      const char *fix_default, int need_velocity, Hold *h)
 {
     const char *fix = fix_default;
     double v[2] = {0.0, 0.0};
+    int table = config_setting_get_member(g, "table") != NULL;
+    if (table && (config_setting_get_member(g, "velocity") ||
+                  config_setting_get_member(g, "ramp")))
+        return scene_error(r, config_setting_get_member(g, "table"), "table",
+                           "gives the velocity in time; velocity and ramp with it "
+                           "would contradict it");
     if (scene_string(r, g, "fix", fix_default == NULL, &fix) < 0 ||
-        scene_pair(r, g, "velocity", need_velocity, v) < 0 ||
-        scene_number(r, g, "ramp", 0, 0.0, &h->ramp) < 0)
+        scene_pair(r, g, "velocity", need_velocity && !table, v) < 0 ||
+        scene_number(r, g, "ramp", 0, 0.0, &h->ramp) < 0 ||
+        (table && read_hold_table(r, g, h, v)))
         return -1;
     h->fix = fix_bits(fix);
     if (!h->fix)
         return scene_error(r, config_setting_get_member(g, "fix"), "fix",
                            "\"%s\": expected \"x\", \"y\" or \"xy\"", fix);
+    const char *key = table ? "table" : "velocity";
     if ((v[0] != 0.0 && !(h->fix & GRID_FIX_X)) || (v[1] != 0.0 && !(h->fix & GRID_FIX_Y)))
-        return scene_error(r, config_setting_get_member(g, "velocity"), "velocity",
+        return scene_error(r, config_setting_get_member(g, key), key,
                            "[%g, %g] moves a direction that fix = \"%s\" leaves "
                            "free", v[0], v[1], fix);
     if (!(h->ramp >= 0.0))
@@ -656,7 +702,8 @@ static int read_hold(SceneReader *r, const config_setting_t *g,
 
 static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
-    static const char *const keys[] = {"rectangle", "fix", "velocity", "ramp", NULL};
+    static const char *const keys[] = {"rectangle", "fix", "velocity", "ramp", "table",
+                                       NULL};
     Scene *sc = &sim->scene;
     int st = read_regions(r, root, "boundaries", &sc->nbc, (void **)&sc->bc,
                           sizeof(Boundary));
@@ -704,7 +751,8 @@ static int read_loads(Sim *sim, SceneReader *r, const config_setting_t *root)
 
 static int read_held_points(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
-    static const char *const keys[] = {"rectangle", "fix", "velocity", "ramp", NULL};
+    static const char *const keys[] = {"rectangle", "fix", "velocity", "ramp", "table",
+                                       NULL};
     Scene *sc = &sim->scene;
     int st = read_regions(r, root, "point_velocities", &sc->nheld, (void **)&sc->held,
                           sizeof(HeldPoints));

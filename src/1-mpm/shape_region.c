@@ -31,8 +31,10 @@ void scene_free(Scene *sc)
 {
     for (int k = 0; k < sc->nbodies; k++)
         free(sc->bodies[k].shape.v);
-    for (int k = 0; k < sc->nbc; k++)
+    for (int k = 0; k < sc->nbc; k++) {
         free(sc->bc[k].region.v);
+        free(sc->bc[k].hold.table);
+    }
     for (int k = 0; k < sc->nloads; k++) {
         free(sc->loads[k].region.v);
         free(sc->loads[k].points);
@@ -40,6 +42,7 @@ void scene_free(Scene *sc)
     for (int k = 0; k < sc->nheld; k++) {
         free(sc->held[k].region.v);
         free(sc->held[k].points);
+        free(sc->held[k].hold.table);
     }
     free(sc->held);
     sc->held = NULL;
