@@ -87,8 +87,10 @@ int sim_run(Sim *sim, const char *outdir, int progress)
             rc = 3;
             break;
         }
-        if (sim->step % hist_every == 0 || sim->step == sim->nsteps)
+        if (sim->step % hist_every == 0 || sim->step == sim->nsteps) {
             output_history_row(sim, hist);
+            fflush(hist);                          /* whole rows on disk */
+        }
         if (sim->step == snap_at) {                /* the step nearest k T / K */
             times[nsnap] = sim->t;
             if (output_snapshot(sim, outdir, nsnap++, times))

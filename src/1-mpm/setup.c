@@ -79,6 +79,22 @@ static int initial_strain(const Scene *sc, int b, double e[3], char *err,
     return 0;
 }
 
+/** A point's mass in body @p b, rho x (cell / k)^2 x thickness, in the
+ *  range whose sums and m v^2 stay finite: [1e-300, 1e300]. */
+static int check_point_mass(const Scene *sc, int b, char *err, size_t errlen)
+{
+    const Body *B = &sc->bodies[b];
+    double rho = sc->mat[B->material].rho;
+    double vol = (sc->dx / B->ppc) * (sc->dy / B->ppc) * B->thickness;
+    double m = rho * vol;
+    if (m >= 1e-300 && m <= 1e300)
+        return 0;
+    snprintf(err, errlen, "%s:%d: body \"%s\": a point's mass rho x volume = %g "
+             "x %g = %g is outside [1e-300, 1e300]: check rho, thickness and "
+             "cell_size", sc->file, B->line, B->name, rho, vol, m);
+    return -1;
+}
+
 int setup_points(Sim *sim, char *err, size_t errlen)
 {
     Scene *sc = &sim->scene;
@@ -89,7 +105,7 @@ int setup_points(Sim *sim, char *err, size_t errlen)
     for (int b = 0; b < sc->nbodies; b++) {
         int before = sim->pts.n;
         double e0[3];
-        if (initial_strain(sc, b, e0, err, errlen))
+        if (check_point_mass(sc, b, err, errlen) || initial_strain(sc, b, e0, err, errlen))
             return -1;
         if (fill_body(sim, b, e0)) {
             snprintf(err, errlen, "%s: out of memory for the points", sc->file);
@@ -240,6 +256,41 @@ void sim_set_time_step(Sim *sim)
         v2 = fmax(v2, P->vx[p] * P->vx[p] + P->vy[p] * P->vy[p]);
     /* the fastest wave, carried by the fastest point, crosses a cell */
     sim->dt = sc->run.cfl * fmin(sc->dx, sc->dy) / (c + sqrt(v2));
-    sim->nsteps = (long)ceil(sc->run.time / sim->dt - 1e-9);
+    double steps = ceil(sc->run.time / sim->dt - 1e-9);
+    /* 0: no step, or more than a long holds (sim_check_time_step says) */
+    sim->nsteps = steps >= 1.0 && steps < 4e18 ? (long)steps : 0;
 }
 /// [sim_set_time_step]
+
+int sim_check_time_step(const Sim *sim, char *err, size_t errlen)
+{
+    const Scene *sc = &sim->scene;
+    const RunSettings *run = &sc->run;
+    const char *tu = run->units->time;
+    int fast = 0;                                /* the fastest material */
+    for (int k = 1; k < sc->nmat; k++)
+        if (sc->mat[k].wave > sc->mat[fast].wave)
+            fast = k;
+    double c = sc->mat[fast].wave, h = fmin(sc->dx, sc->dy);
+    if (!(isfinite(c) && c > 0)) {
+        snprintf(err, errlen, "%s: material \"%s\": wave speed sqrt(c11 / rho) = %g "
+                 "(E %g, rho %g) gives no time step", sc->file, sc->mat[fast].name,
+                 c, sc->mat[fast].E, sc->mat[fast].rho);
+        return -1;
+    }
+    if (!(isfinite(sim->dt) && sim->dt > 0)) {
+        snprintf(err, errlen, "%s: run.cfl %g x cell %g / (wave speed %g + the "
+                 "fastest point) gives a time step of %g %s", sc->file, run->cfl,
+                 h, c, sim->dt, tu);
+        return -1;
+    }
+    if (sim->nsteps == 0) {
+        double steps = ceil(run->time / sim->dt - 1e-9);
+        snprintf(err, errlen, "%s: run.time %g %s over time steps of %g %s (run.cfl "
+                 "%g, cell %g, fastest wave %g in material \"%s\") is %s", sc->file,
+                 run->time, tu, sim->dt, tu, run->cfl, h, c, sc->mat[fast].name,
+                 steps < 1.0 ? "not one step" : "more steps than a run can count");
+        return -1;
+    }
+    return 0;
+}

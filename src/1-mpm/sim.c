@@ -68,7 +68,8 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
     if (scene_read(sim, cfg, &r))
         return -1;
     if (setup_points(sim, err, errlen) || setup_grid(sim, err, errlen) ||
-        setup_loads(sim, err, errlen) || setup_held_points(sim, err, errlen) || prepare_stages(sim, name, err, errlen))
+        setup_loads(sim, err, errlen) || setup_held_points(sim, err, errlen) ||
+        prepare_stages(sim, name, err, errlen))
         return -1;
     sim->bodyke = calloc((size_t)sim->scene.nbodies, sizeof(double));
     if (!sim->bodyke) {
@@ -76,7 +77,7 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
         return -1;
     }
     sim_set_time_step(sim);
-    return 0;
+    return sim_check_time_step(sim, err, errlen);
 }
 
 static int syntax_error(const config_t *cfg, const char *name, char *err,

@@ -92,6 +92,14 @@ int sim_load_string(Sim *sim, const char *text, const char *name,
 void sim_set_time_step(Sim *sim);
 
 /**
+ * @brief Is the time step of sim_set_time_step() usable: positive and
+ *        finite, and the run's time at least one and at most a countable
+ *        number of steps? @return 0, or -1 with a message naming the
+ *        settings that give it in @p err.
+ */
+int sim_check_time_step(const Sim *sim, char *err, size_t errlen);
+
+/**
  * @brief Take one MPM time step (Tasks 0-8): the "mpm" row of the method
  *        table.
  * @return 0, or non-zero when the run went unstable (see Sim::fail).

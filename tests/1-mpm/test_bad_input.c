@@ -185,6 +185,15 @@ static void bad_overrides_are_refused(void **state)
         {"run.cfl=fast", "cfl (set on the command line): expected a number"},
         {"grid.cells=5", "cells (set on the command line): expected two numbers"},
         {"run.time=-1", "time (set on the command line): -1 must be > 0"},
+        /* values whose derived quantities leave their range (issue 10) */
+        {"run.time=1e308", "is more steps than a run can count"},
+        {"run.cfl=1e-308", "(run.cfl 1e-308,"},
+        {"run.time=1e-308", "is not one step"},
+        {"materials.[0].E=1e308", "gives no time step"},
+        {"bodies.[0].thickness=1e-308", "is outside [1e-300, 1e300]"},
+        {"materials.[0].rho=1e308", "is outside [1e-300, 1e300]"},
+        {"grid.cell_size=[1e200, 1e200]", "= inf is outside [1e-300, 1e300]"},
+        {"bodies.[0].velocity=[1e309, 0.0]", "value inf is not finite"},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         char args[1024], out[4096];
