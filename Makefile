@@ -17,9 +17,9 @@ WARN := -std=c11 -Wall -Wextra -Werror -Wshadow -Wmissing-prototypes -Wundef \
         -D_POSIX_C_SOURCE=200809L
 CFLAGS_release := $(WARN) -O2 -g
 CFLAGS_asan := $(WARN) -O1 -g -fno-omit-frame-pointer \
-               -fsanitize=address,undefined -fno-sanitize-recover=all
+               -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all
 LDFLAGS_release :=
-LDFLAGS_asan := -fsanitize=address,undefined
+LDFLAGS_asan := -fsanitize=address,undefined,float-cast-overflow
 LIBS := -lconfig -lm
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # tests link cmocka and LAPACKE (the reference finite element solver)
