@@ -232,6 +232,23 @@ int setup_held_points(Sim *sim, char *err, size_t errlen)
         if (H->count == 0)
             return no_point_in(sc, "point_velocities", H->line, &H->region, err,
                                errlen);
+        const Grid *g = &sim->grid;
+        for (int j = 0; j < H->count; j++) {    /* its nodes: held by no boundary */
+            int p = H->points[j];
+            int i0 = (int)floor((P->x[p] - g->ox) / g->dx);
+            int j0 = (int)floor((P->y[p] - g->oy) / g->dy);
+            for (int a = 0; a < 4; a++) {
+                int n = (j0 + a / 2) * g->nnx + i0 + a % 2;
+                if (g->fixed[n]) {
+                    snprintf(err, errlen, "%s:%d: point_velocities: the point at "
+                             "(%g, %g) reaches the node at (%g, %g), which a "
+                             "boundary holds; the two holds contradict", sc->file,
+                             H->line, P->x[p], P->y[p], grid_node_x(g, n),
+                             grid_node_y(g, n));
+                    return -1;
+                }
+            }
+        }
         double v[2];
         hold_velocity(&H->hold, 0.0, v);
         for (int j = 0; j < H->count; j++) {    /* they start at it */
