@@ -175,6 +175,12 @@ int hooks_on_report(Hooks *h, ReportHook fn, void *state)
     return subscribe(&h->seam[SEAM_REPORT], s);
 }
 
+int hooks_on_checkpoint(Hooks *h, CheckpointHook fn, void *state)
+{
+    Subscriber s = {.fn.checkpoint = fn, .state = state, .rank = h->rank};
+    return subscribe(&h->seam[SEAM_CHECKPOINT], s);
+}
+
 int hooks_run_report(const struct Sim *sim, FILE *f)
 {
     const SeamList *l = &sim->hooks.seam[SEAM_REPORT];

@@ -41,6 +41,7 @@ typedef enum Seam {
     SEAM_SNAPSHOT,       /**< write extra files with each snapshot */
     SEAM_HISTORY,        /**< write extra columns of history.csv */
     SEAM_REPORT,         /**< end of a run: print a summary (stdout) */
+    SEAM_CHECKPOINT,     /**< save or restore state a restart needs */
     SEAM_COUNT           /**< number of seams */
 } Seam;
 
@@ -58,6 +59,9 @@ typedef int (*HistoryHook)(const struct Sim *sim, void *state, FILE *f,
 /** A report subscriber: print lines about the finished run to @p f; 0 or -1. */
 typedef int (*ReportHook)(const struct Sim *sim, void *state, FILE *f);
 
+/** A checkpoint subscriber: save (@p save = 1) or restore (0) the state
+ *  that lasts from step to step, with checkpoint_io(); 0 or -1. */
+typedef int (*CheckpointHook)(struct Sim *sim, void *state, FILE *f, int save);
 /** One subscriber: its function (of the seam's type) and its own state. */
 typedef struct Subscriber {
     union {
@@ -66,6 +70,7 @@ typedef struct Subscriber {
         SnapshotHook snapshot; /**< SEAM_SNAPSHOT */
         HistoryHook history;   /**< SEAM_HISTORY */
         ReportHook report;     /**< SEAM_REPORT */
+        CheckpointHook checkpoint; /**< SEAM_CHECKPOINT */
     } fn;                      /**< the function */
     void *state;               /**< passed back to it */
     int rank;                  /**< stage order of its installer */
@@ -202,6 +207,8 @@ int hooks_on_history(Hooks *h, HistoryHook fn, void *state);
 /** @brief Subscribe to SEAM_REPORT. @return 0 or -1. */
 int hooks_on_report(Hooks *h, ReportHook fn, void *state);
 
+/** @brief Subscribe to SEAM_CHECKPOINT. @return 0 or -1. */
+int hooks_on_checkpoint(Hooks *h, CheckpointHook fn, void *state);
 /** @brief Print the end-of-run lines of every SEAM_REPORT subscriber to
  *         @p f. @return 0, or -1 when a write failed. */
 int hooks_run_report(const struct Sim *sim, FILE *f);

@@ -5,26 +5,47 @@
 #include "output.h"
 
 #include <errno.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
+#include "outfile.h"
 #include "step.h"
+
+/** mkdir that is content when a directory of that name is there. */
+static int make_one_dir(const char *path)
+{
+    struct stat st;
+    if (mkdir(path, 0755) == 0)
+        return 0;
+    int err = errno;
+    if (err == EEXIST && stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+        return 0;
+    fprintf(stderr, "mpm: cannot create output directory %s: %s\n", path,
+            strerror(err == EEXIST ? ENOTDIR : err));
+    return -1;
+}
 
 int output_make_dir(const char *dir)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s", dir);
-    for (char *c = path + 1; *c; c++) {
-        if (*c != '/')
+    char *path = malloc(strlen(dir) + 1);
+    if (!path) {
+        fprintf(stderr, "mpm: out of memory for the path %s\n", dir);
+        return -1;
+    }
+    strcpy(path, dir);
+    int rc = 0;
+    for (char *c = path + 1; *c && rc == 0; c++) {
+        if (*c != '/' || c[-1] == '/')
             continue;
         *c = '\0';
-        if (mkdir(path, 0755) && errno != EEXIST)
-            return -1;
+        rc = make_one_dir(path);
         *c = '/';
     }
-    if (mkdir(path, 0755) && errno != EEXIST)
-        return -1;
-    return 0;
+    if (rc == 0)
+        rc = make_one_dir(path);
+    free(path);
+    return rc;
 }
 
 void output_csv_time(const Sim *sim, FILE *f)
@@ -86,12 +107,13 @@ static void vtu_int(FILE *f, const char *name, const int *a, int n)
 }
 
 /// [write_vtu]
-static int write_vtu(const Sim *sim, const char *path)
+static int write_vtu(const Sim *sim, const char *dir, int index)
 {
     const Particles *P = &sim->pts;
-    FILE *f = fopen(path, "w");
-    if (!f)
+    OutFile o;
+    if (outfile_open(&o, dir, "particles_%05d.vtu", index))
         return -1;
+    FILE *f = o.f;
     int n = P->n, d = output_digits(sim, 9), dx = output_digits(sim, 12);
     fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
                "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
@@ -130,11 +152,11 @@ static int write_vtu(const Sim *sim, const char *path)
     vtu_int(f, "material", P->mat, n);
     vtu_int(f, "body", P->body, n);
     fprintf(f, "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-    return fclose(f) == 0 ? 0 : -1;
+    return outfile_commit(&o);
 }
 /// [write_vtu]
 
-int output_grid_csv(Sim *sim, const char *path)
+int output_grid_csv(Sim *sim, const char *dir, const char *name)
 {
     Grid *g = &sim->grid;
     const Particles *P = &sim->pts;
@@ -156,9 +178,12 @@ int output_grid_csv(Sim *sim, const char *path)
             g->px[n] += w * P->sxy[p];
         }
     }
-    FILE *f = fopen(path, "w");
-    if (!f)
+    OutFile o;
+    if (outfile_open(&o, dir, "%s", name)) {
+        grid_clear(g);
         return -1;
+    }
+    FILE *f = o.f;
     int d = output_digits(sim, 10);
     output_csv_time(sim, f);
     fprintf(f, "x,y,mass,sigma_xx,sigma_yy,sigma_xy\n");
@@ -171,15 +196,16 @@ int output_grid_csv(Sim *sim, const char *path)
                 d, g->fy[n] * im, d, g->px[n] * im);
     }
     grid_clear(g);
-    return fclose(f) == 0 ? 0 : -1;
+    return outfile_commit(&o);
 }
 
-int output_points_csv(const Sim *sim, const char *path)
+int output_points_csv(const Sim *sim, const char *dir, const char *name)
 {
     const Particles *P = &sim->pts;
-    FILE *f = fopen(path, "w");
-    if (!f)
+    OutFile o;
+    if (outfile_open(&o, dir, "%s", name))
         return -1;
+    FILE *f = o.f;
     output_csv_time(sim, f);
     fprintf(f, "x,y,vx,vy,sigma_xx,sigma_yy,sigma_xy,eps_xx,eps_yy,eps_xy,"
                "mass,material,body\n");
@@ -189,32 +215,28 @@ int output_points_csv(const Sim *sim, const char *path)
                 dx, P->x[p], dx, P->y[p], d, P->vx[p], d, P->vy[p], d, P->sxx[p],
                 d, P->syy[p], d, P->sxy[p], d, P->exx[p], d, P->eyy[p],
                 d, P->exy[p], d, P->m[p], P->mat[p], P->body[p]);
-    return fclose(f) == 0 ? 0 : -1;
+    return outfile_commit(&o);
 }
 
 int output_snapshot(Sim *sim, const char *dir, int index, const double *times)
 {
-    char path[1200];
-    snprintf(path, sizeof path, "%s/particles_%05d.vtu", dir, index);
-    if (write_vtu(sim, path))
-        return -1;
-    snprintf(path, sizeof path, "%s/grid_%05d.csv", dir, index);
-    if (output_grid_csv(sim, path))
+    char name[32];
+    snprintf(name, sizeof name, "grid_%05d.csv", index);
+    if (write_vtu(sim, dir, index) || output_grid_csv(sim, dir, name))
         return -1;
     const SeamList *l = &sim->hooks.seam[SEAM_SNAPSHOT];
     for (int k = 0; k < l->n; k++)
         if (l->at[k].fn.snapshot(sim, l->at[k].state, dir, index))
             return -1;
     /* rewrite the series so that it is complete after every snapshot */
-    snprintf(path, sizeof path, "%s/particles.pvd", dir);
-    FILE *f = fopen(path, "w");
-    if (!f)
+    OutFile o;
+    if (outfile_open(&o, dir, "particles.pvd"))
         return -1;
-    fprintf(f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
-               "<Collection>\n");
+    fprintf(o.f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+                 "<Collection>\n");
     for (int k = 0; k <= index; k++)
-        fprintf(f, "<DataSet timestep=\"%.*g\" file=\"particles_%05d.vtu\"/>\n",
+        fprintf(o.f, "<DataSet timestep=\"%.*g\" file=\"particles_%05d.vtu\"/>\n",
                 output_digits(sim, 10), times[k], k);
-    fprintf(f, "</Collection>\n</VTKFile>\n");
-    return fclose(f) == 0 ? 0 : -1;
+    fprintf(o.f, "</Collection>\n</VTKFile>\n");
+    return outfile_commit(&o);
 }

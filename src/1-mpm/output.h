@@ -22,7 +22,8 @@ static inline int output_digits(const Sim *sim, int usual)
  *         (a comment to gnuplot; the column names follow). */
 void output_csv_time(const Sim *sim, FILE *f);
 
-/** @brief Create @p dir and its parents if missing. @return 0 or -1. */
+/** @brief Create @p dir and its parents if missing. @return 0, or -1
+ *         after printing which directory and why. */
 int output_make_dir(const char *dir);
 
 /** @brief Write the header row of history.csv. */
@@ -38,15 +39,19 @@ void output_history_row(Sim *sim, FILE *f);
  * @param dir   output directory
  * @param index snapshot number, 0 for the initial state
  * @param times times of snapshots 0..index
- * @return 0, or -1 when a file cannot be written.
+ * Each file is written whole or not at all (outfile.h).
+ * @return 0, or -1 when a file cannot be written (the message, naming the
+ *         file and the reason, is printed).
  */
 int output_snapshot(Sim *sim, const char *dir, int index, const double *times);
 
-/** @brief Write all points as CSV to @p path. @return 0 or -1. */
-int output_points_csv(const Sim *sim, const char *path);
+/** @brief Write all points as CSV to @p dir/@p name. @return 0, or -1
+ *         after a message naming the file. */
+int output_points_csv(const Sim *sim, const char *dir, const char *name);
 
 /** @brief Extrapolate point stresses to the grid nodes (mass-weighted, as
- *         momenta are) and write x, y, mass, sigma to @p path. @return 0/-1. */
-int output_grid_csv(Sim *sim, const char *path);
+ *         momenta are) and write x, y, mass, sigma to @p dir/@p name.
+ *         @return 0, or -1 after a message naming the file. */
+int output_grid_csv(Sim *sim, const char *dir, const char *name);
 
 #endif

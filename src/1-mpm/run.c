@@ -3,12 +3,17 @@
  * @brief The run loop: steps, history, snapshots, progress, and the stop
  *        on instability.
  */
+#include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 #include <unistd.h>
 
+#include "checkpoint.h"
+#include "outfile.h"
 #include "output.h"
 #include "sim.h"
 
@@ -42,39 +47,162 @@ static long snapshot_step(const Sim *sim, int k)
     return n < 1 ? 1 : n > sim->nsteps ? sim->nsteps : n;
 }
 
-/// [sim_run]
-int sim_run(Sim *sim, const char *outdir, int progress)
+/** history.csv: appended a row at a time, each row flushed, so the file
+ *  holds whole rows after an interrupt; a row that cannot be written
+ *  whole is cut off again. */
+typedef struct History {
+    FILE *f;            /**< the open file */
+    char *path;         /**< its name, for messages */
+    long bytes;         /**< its length up to the last whole row */
+} History;
+
+static int history_flush(History *h)
 {
-    char path[1200];
+    errno = 0;
+    if (fflush(h->f) == 0 && !ferror(h->f)) {
+        h->bytes = ftell(h->f);
+        return 0;
+    }
+    outfile_report(h->path, errno ? errno : EIO);
+    if (ftruncate(fileno(h->f), h->bytes) == 0)   /* no cut row on disk */
+        clearerr(h->f);
+    return -1;
+}
+
+static int history_row(Sim *sim, History *h)
+{
+    output_history_row(sim, h->f);
+    return history_flush(h);
+}
+
+/** Open history.csv: new with its header and first row, or, to restart,
+ *  cut back to the checkpoint's last row. @return 0 or -1. */
+static int history_open(Sim *sim, History *h, const char *dir, int restart)
+{
+    h->bytes = 0;
+    h->path = outfile_path(dir, "history.csv");
+    h->f = h->path ? fopen(h->path, restart ? "r+" : "w") : NULL;
+    if (!h->f) {
+        outfile_report(h->path ? h->path : dir, h->path ? errno : ENOMEM);
+        return -1;
+    }
+    if (restart)
+        return 0;
+    output_history_header(sim, h->f);
+    return history_row(sim, h);
+}
+
+/** Cut a restarted history.csv back to @p bytes and write after it. */
+static int history_resume(History *h, long bytes)
+{
+    h->bytes = bytes;
+    if (ftruncate(fileno(h->f), bytes) || fseek(h->f, bytes, SEEK_SET)) {
+        outfile_report(h->path, errno);
+        return -1;
+    }
+    return 0;
+}
+
+static int history_close(History *h)
+{
+    int rc = 0;
+    if (h->f && fclose(h->f) != 0) {
+        outfile_report(h->path, errno);
+        rc = -1;
+    }
+    free(h->path);
+    return rc;
+}
+
+/** Snapshot number rp->nsnap now, and the step of the next one. */
+static int snapshot_now(Sim *sim, RunProgress *rp, const char *dir)
+{
     const RunSettings *run = &sim->scene.run;
-    if (output_make_dir(outdir)) {
-        fprintf(stderr, "mpm: cannot create output directory %s\n", outdir);
+    rp->times[rp->nsnap] = sim->t;
+    if (output_snapshot(sim, dir, rp->nsnap++, rp->times))
+        return -1;
+    while (rp->asked <= run->snapshots && snapshot_step(sim, rp->asked) <= sim->step)
+        rp->asked++;                               /* two asked times, one step */
+    rp->snap_at = rp->asked <= run->snapshots ? snapshot_step(sim, rp->asked) : -1;
+    return 0;
+}
+
+/** Start a run: a new one (history header, snapshot 0), or one that goes
+ *  on from the checkpoint in @p dir. @return 0, 1 (checkpoint refused) or
+ *  2 (output error). */
+static int run_start(Sim *sim, RunProgress *rp, History *h, const char *dir,
+                     int restart)
+{
+    if (restart) {
+        char err[2048];
+        if (checkpoint_read(sim, rp, dir, err, sizeof err)) {
+            fprintf(stderr, "mpm: %s\n", err);
+            return 1;
+        }
+        if (history_open(sim, h, dir, 1) || history_resume(h, rp->history_bytes))
+            return 2;
+        return 0;
+    }
+    char *old = outfile_path(dir, "%s", CHECKPOINT_FILE);
+    if (old && unlink(old) && errno != ENOENT) {    /* not another run's */
+        outfile_report(old, errno);
+        free(old);
         return 2;
     }
-    snprintf(path, sizeof path, "%s/history.csv", outdir);
-    FILE *hist = fopen(path, "w");
-    double *times = malloc(sizeof(double) * (size_t)(run->snapshots + 2));
-    if (!hist || !times) {
-        fprintf(stderr, "mpm: cannot write %s\n", path);
-        if (hist)
-            fclose(hist);
-        free(times);
+    free(old);
+    if (history_open(sim, h, dir, 0))
+        return 2;
+    rp->asked = 1;
+    rp->snap_at = sim->scene.run.snapshots > 0 ? snapshot_step(sim, 1) : -1;
+    if (sim->scene.run.snapshots > 0 && snapshot_now(sim, rp, dir))
+        return 2;
+    return 0;
+}
+
+static int save_checkpoint(Sim *sim, RunProgress *rp, const History *h,
+                           const char *dir)
+{
+    rp->history_bytes = h->bytes;
+    return checkpoint_write(sim, rp, dir);
+}
+
+/** A stop before the end: the points and a checkpoint, and a message
+ *  saying where the run stopped and how to go on. @return the status. */
+static int run_stopped(Sim *sim, RunProgress *rp, const History *h,
+                       const char *dir, int signo)
+{
+    int bad = output_points_csv(sim, dir, "particles_final.csv") ||
+              save_checkpoint(sim, rp, h, dir);
+    fprintf(stderr, "mpm: %s after step %ld of %ld (t = %.6g %s)%s\n",
+            signo == SIGINT ? "interrupted (SIGINT)" :
+            signo == SIGTERM ? "terminated (SIGTERM)" :
+            signo ? "stopped by a signal" : "stopped as asked (--stop-at)",
+            sim->step, sim->nsteps, sim->t, sim->scene.run.units->time,
+            bad ? "; the state could not be saved" : "");
+    if (bad)
+        return 2;
+    fprintf(stderr, "mpm: points in %s/particles_final.csv; go on with: "
+            "mpm --restart %s\n", dir, dir);
+    return signo ? 128 + signo : 0;
+}
+
+/// [sim_run]
+int sim_run(Sim *sim, const char *outdir, const RunOptions *opt)
+{
+    const RunSettings *run = &sim->scene.run;
+    RunProgress rp = {0, 1, -1, NULL, run->snapshots + 2, 0};
+    History h = {NULL, NULL, 0};
+    rp.times = malloc(sizeof(double) * (size_t)rp.cap);
+    if (!rp.times || output_make_dir(outdir)) {
+        free(rp.times);
         return 2;
     }
+    int rc = run_start(sim, &rp, &h, outdir, opt->restart);
     long hist_every = run->history_every > 0 ? run->history_every
                                              : (sim->nsteps + 999) / 1000;
-    int nsnap = 0, asked = 1, rc = 0;             /* asked: the next snapshot k */
-    long snap_at = run->snapshots > 0 ? snapshot_step(sim, 1) : -1;
-    progress = progress && isatty(STDERR_FILENO);
+    int progress = opt->progress && isatty(STDERR_FILENO), signo = 0;
     double start = wall_seconds(), last = 0;
-
-    output_history_header(sim, hist);
-    output_history_row(sim, hist);
-    if (run->snapshots > 0) {
-        times[nsnap] = sim->t;
-        if (output_snapshot(sim, outdir, nsnap++, times))
-            rc = 2;
-    }
+    long first = sim->step;
     while (rc == 0 && sim->step < sim->nsteps) {
         if (sim_advance(sim)) {
             const Failure *f = &sim->fail;
@@ -87,34 +215,39 @@ int sim_run(Sim *sim, const char *outdir, int progress)
             rc = 3;
             break;
         }
-        if (sim->step % hist_every == 0 || sim->step == sim->nsteps) {
-            output_history_row(sim, hist);
-            fflush(hist);                          /* whole rows on disk */
-        }
-        if (sim->step == snap_at) {                /* the step nearest k T / K */
-            times[nsnap] = sim->t;
-            if (output_snapshot(sim, outdir, nsnap++, times))
-                rc = 2;
-            while (asked <= run->snapshots && snapshot_step(sim, asked) <= sim->step)
-                asked++;                           /* two asked times, one step */
-            snap_at = asked <= run->snapshots ? snapshot_step(sim, asked) : -1;
-        }
+        if ((sim->step % hist_every == 0 || sim->step == sim->nsteps) &&
+            history_row(sim, &h))
+            rc = 2;
+        if (rc == 0 && sim->step == rp.snap_at && snapshot_now(sim, &rp, outdir))
+            rc = 2;                                /* the step nearest k T / K */
+        if (rc == 0 && run->checkpoint_every > 0 && sim->step < sim->nsteps &&
+            sim->step % run->checkpoint_every == 0 && save_checkpoint(sim, &rp, &h, outdir))
+            rc = 2;
         if (progress)
             progress_line(sim, start, &last);
+        signo = opt->interrupt ? *opt->interrupt : 0;
+        if (rc == 0 && sim->step < sim->nsteps &&
+            (signo || sim->step == opt->stop_at)) {
+            if (progress)
+                fputc('\n', stderr);
+            rc = run_stopped(sim, &rp, &h, outdir, signo);
+            progress = 0;
+            if (rc == 0)
+                rc = -1;                           /* stopped as asked */
+            break;
+        }
     }
     sim->loop_seconds = wall_seconds() - start;
+    sim->loop_steps = sim->step - first;
     if (progress && rc != 3)
         fputc('\n', stderr);
-    if (fclose(hist) != 0 && rc == 0)
+    if (history_close(&h) && (rc == 0 || rc == -1))
         rc = 2;
-    if (rc == 0) {
-        snprintf(path, sizeof path, "%s/particles_final.csv", outdir);
-        if (output_points_csv(sim, path))
-            rc = 2;
-    }
+    if (rc == 0 && output_points_csv(sim, outdir, "particles_final.csv"))
+        rc = 2;
     if (rc == 2)
-        fprintf(stderr, "mpm: cannot write output into %s\n", outdir);
-    free(times);
-    return rc;
+        fprintf(stderr, "mpm: stopped: output in %s is incomplete\n", outdir);
+    free(rp.times);
+    return rc == -1 ? 0 : rc;
 }
 /// [sim_run]

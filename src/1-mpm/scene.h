@@ -112,6 +112,8 @@ typedef struct RunSettings {
     const struct Method *method; /**< how a step is taken (run.method) */
     int snapshots;      /**< number of particle/grid snapshots after t = 0 */
     int history_every;  /**< steps between history rows (0 = automatic) */
+    long checkpoint_every; /**< steps between checkpoints (0: only when a
+                                run stops before its end) */
     const Units *units; /**< the scene's unit system (run.units) */
     int full_precision; /**< write 17 significant digits (run.precision =
                              "full"); 0: the usual 9 to 12 */

@@ -367,11 +367,12 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
     static const char *const keys[] = {"time", "cfl", "allow_cfl_above_one",
         "update", "method", "damping", "plane", "gravity", "snapshots",
-        "history_every", "stress_rate", "precision", "units", NULL};
+        "history_every", "stress_rate", "precision", "units",
+        "checkpoint_every", NULL};
     int st;
     const config_setting_t *g = group_of(r, root, "run", 1, &st);
     RunSettings *run = &sim->scene.run;
-    double gr[2] = {0, 0}, snaps, hist;
+    double gr[2] = {0, 0}, snaps, hist, ckpt;
     const char *update = "musl", *plane = "stress", *method = "mpm";
     const char *rate = "unrotated", *precision = "usual", *units = "mm-g-ms";
     if (!g || scene_check_open_keys(r, &sim->hooks, "run", g, keys, NULL) ||
@@ -381,6 +382,7 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         scene_pair(r, g, "gravity", 0, gr) < 0 ||
         scene_number(r, g, "snapshots", 0, 10, &snaps) < 0 ||
         scene_number(r, g, "history_every", 0, 0, &hist) < 0 ||
+        scene_number(r, g, "checkpoint_every", 0, 0, &ckpt) < 0 ||
         scene_string(r, g, "update", 0, &update) < 0 ||
         scene_string(r, g, "method", 0, &method) < 0 ||
         scene_string(r, g, "plane", 0, &plane) < 0 ||
@@ -427,8 +429,13 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
     if (hist < 0 || hist != floor(hist) || hist > 1e9)
         return scene_error(r, config_setting_get_member(g, "history_every"),
                            "history_every", "%g must be a whole number >= 0", hist);
+    if (ckpt < 0 || ckpt != floor(ckpt) || ckpt > 1e15)
+        return scene_error(r, config_setting_get_member(g, "checkpoint_every"),
+                           "checkpoint_every", "%g must be a whole number >= 0",
+                           ckpt);
     run->snapshots = (int)snaps;
     run->history_every = (int)hist;
+    run->checkpoint_every = (long)ckpt;
     if (strcmp(plane, "stress") == 0)
         run->plane = PLANE_STRESS;
     else if (strcmp(plane, "strain") == 0)

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "checkpoint.h"
 #include "scene_read.h"
 #include "setup.h"
 
@@ -110,6 +111,10 @@ int sim_load_file(Sim *sim, const char *path, int noverrides,
         rc = syntax_error(&cfg, path, err, errlen);
     for (int k = 0; rc == 0 && k < noverrides; k++)
         rc = scene_override(&cfg, overrides[k], err, errlen);
+    sim->source = path;
+    sim->noverrides = noverrides;
+    sim->overrides = overrides;
+    sim->scene_hash = checkpoint_fingerprint(&cfg);
     if (rc == 0)
         rc = load_config(sim, &cfg, path, err, errlen);
     config_destroy(&cfg);
@@ -124,6 +129,8 @@ int sim_load_string(Sim *sim, const char *text, const char *name, char *err,
     int rc = 0;
     if (config_read_string(&cfg, text) != CONFIG_TRUE)
         rc = syntax_error(&cfg, name, err, errlen);
+    sim->source = name;
+    sim->scene_hash = checkpoint_fingerprint(&cfg);
     if (rc == 0)
         rc = load_config(sim, &cfg, name, err, errlen);
     config_destroy(&cfg);

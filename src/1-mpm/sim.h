@@ -6,7 +6,9 @@
 #ifndef MPM_SIM_H
 #define MPM_SIM_H
 
+#include <signal.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "field_table.h"
 #include "grid.h"
@@ -52,7 +54,22 @@ typedef struct Sim {
     int *moving;        /**< those nodes */
     int *moving_bc;     /**< the boundary (Scene::bc) that holds each */
     double loop_seconds; /**< wall time of sim_run()'s time loop, output included */
+    long loop_steps;    /**< steps that loop took (fewer after a restart) */
+    const char *source; /**< the scene file as given (a checkpoint names it) */
+    int noverrides;     /**< its command-line overrides */
+    char *const *overrides; /**< "key.path=value", the caller's strings */
+    uint64_t scene_hash; /**< fingerprint of the settings (checkpoint.h) */
 } Sim;
+
+/** How sim_run() runs: what it prints, and when it stops before the end. */
+typedef struct RunOptions {
+    int progress;       /**< print a progress line on standard error */
+    int restart;        /**< go on from the output directory's checkpoint */
+    long stop_at;       /**< stop after this step as if interrupted (0: no) */
+    /** set to a signal's number by the caller's handler (NULL: none):
+     *  the run stops after the step it is in */
+    const volatile sig_atomic_t *interrupt;
+} RunOptions;
 
 /** Quantities that history.csv records at one instant. */
 typedef struct Totals {
@@ -114,12 +131,19 @@ Totals sim_totals(const Sim *sim);
 
 /**
  * @brief Run to the scene's end time writing output into @p outdir.
- * @param sim      a loaded simulation
- * @param outdir   output directory, created if missing
- * @param progress print a progress line on standard error
- * @return 0, 3 when the run went unstable, 2 on an output error.
+ *
+ * A stop before the end (an interrupt, RunOptions::stop_at) writes the
+ * points (particles_final.csv) and a checkpoint, from which a run with
+ * RunOptions::restart goes on to the same bytes an unbroken run writes.
+ * @param sim    a loaded simulation
+ * @param outdir output directory, created if missing
+ * @param opt    what to print and when to stop or save
+ * @return 0 (also after a stop at RunOptions::stop_at), 1 when the
+ *         checkpoint to restart from is refused, 2 on an output error,
+ *         3 when the run went unstable, 128 + the signal's number when
+ *         interrupted.
  */
-int sim_run(Sim *sim, const char *outdir, int progress);
+int sim_run(Sim *sim, const char *outdir, const RunOptions *opt);
 
 /** @brief Release everything the simulation holds. */
 void sim_free(Sim *sim);

@@ -6,37 +6,27 @@
 #include <stdio.h>
 
 #include "cracks.h"
+#include "outfile.h"
 #include "output.h"
-
-/** Close @p f; -1 when it or any write to it failed. */
-static int close_checked(FILE *f)
-{
-    int bad = ferror(f);
-    return (fclose(f) != 0 || bad) ? -1 : 0;
-}
 
 /// [cracks_snapshot]
 int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index)
 {
     const Cracks *C = state;
-    char path[1200];
     int d = output_digits(sim, 12);
-    snprintf(path, sizeof path, "%s/cracks_%05d.csv", dir, index);
-    FILE *f = fopen(path, "w");
-    if (!f)
+    OutFile o;
+    if (outfile_open(&o, dir, "cracks_%05d.csv", index))
         return -1;
+    FILE *f = o.f;
     output_csv_time(sim, f);
     fprintf(f, "crack,point,x,y\n");
     for (int k = 0; k < C->ncracks; k++)
         for (int j = 0; j < C->crack[k].n; j++)
             fprintf(f, "%d,%d,%.*g,%.*g\n", k, j, d, C->crack[k].x[j], d,
                     C->crack[k].y[j]);
-    if (close_checked(f))
+    if (outfile_commit(&o) || outfile_open(&o, dir, "cracks_%05d.vtp", index))
         return -1;
-    snprintf(path, sizeof path, "%s/cracks_%05d.vtp", dir, index);
-    f = fopen(path, "w");
-    if (!f)
-        return -1;
+    f = o.f;
     int npts = 0;
     for (int k = 0; k < C->ncracks; k++)
         npts += C->crack[k].n;
@@ -57,7 +47,7 @@ int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index)
         fprintf(f, "%d\n", off);
     }
     fprintf(f, "</DataArray>\n</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n");
-    return close_checked(f);
+    return outfile_commit(&o);
 }
 /// [cracks_snapshot]
 

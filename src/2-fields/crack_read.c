@@ -173,7 +173,8 @@ int cracks_read(Sim *sim, const config_setting_t *s, int index, SceneReader *r)
         hooks_on_step(h, SEAM_TASK1_FIELDS, cracks_key_fields, C) ||
         hooks_on_step(h, SEAM_TASK7, cracks_task7, C) ||
         hooks_on_snapshot(h, cracks_snapshot, C) ||
-        hooks_on_history(h, cracks_history, C))
+        hooks_on_history(h, cracks_history, C) ||
+        hooks_on_checkpoint(h, cracks_checkpoint, C))
         return scene_error(r, s, "cracks", "too many subscribers at a seam");
     return 0;
 }

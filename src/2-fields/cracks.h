@@ -189,6 +189,9 @@ int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index);
 /** @brief history.csv column: number of multi-field nodes. */
 int cracks_history(const Sim *sim, void *state, FILE *f, int header);
 
+/** @brief Save or restore the cracks' points (SEAM_CHECKPOINT). */
+int cracks_checkpoint(Sim *sim, void *state, FILE *f, int save);
+
 /** @brief Check the cracks against the bodies; bring the search up to date. */
 int cracks_prepare(Sim *sim, void *state, char *err, size_t errlen);
 

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "checkpoint.h"
 #include "crack_contact.h"
 #include "output.h"
 #include "step.h"
@@ -180,4 +181,12 @@ int crack_contact_history(const Sim *sim, void *state, FILE *f, int header)
         return fprintf(f, ",contact_nodes,contact_work") < 0 ? -1 : 0;
     return fprintf(f, ",%d,%.*g", S->nodes, output_digits(sim, 10), S->work) < 0
                ? -1 : 0;
+}
+
+int crack_contact_checkpoint(Sim *sim, void *state, FILE *f, int save)
+{
+    (void)sim;
+    ContactState *S = state;
+    return checkpoint_io(f, &S->work, sizeof S->work, save) ||
+           checkpoint_io(f, &S->nodes, sizeof S->nodes, save) ? -1 : 0;
 }

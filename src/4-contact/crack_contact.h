@@ -54,6 +54,10 @@ int crack_contact_task(Sim *sim, void *state, Seam seam);
 /** @brief history.csv columns contact_nodes and contact_work. */
 int crack_contact_history(const Sim *sim, void *state, FILE *f, int header);
 
+/** @brief Save or restore the contact's work and node count
+ *         (SEAM_CHECKPOINT). */
+int crack_contact_checkpoint(Sim *sim, void *state, FILE *f, int save);
+
 /** @brief Release stage 4's crack-contact state. */
 void crack_contact_release(void *state);
 

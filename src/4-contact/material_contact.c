@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "contact_law.h"
+#include "checkpoint.h"
 #include "material_contact.h"
 #include "output.h"
 #include "step.h"
@@ -241,3 +242,11 @@ int material_contact_history(const Sim *sim, void *state, FILE *f, int header)
     return 0;
 }
 /// [material_contact_history]
+
+int material_contact_checkpoint(Sim *sim, void *state, FILE *f, int save)
+{
+    (void)sim;
+    MaterialContact *M = state;
+    return checkpoint_io(f, &M->work, sizeof M->work, save) ||
+           checkpoint_io(f, &M->nodes, sizeof M->nodes, save) ? -1 : 0;
+}

@@ -96,6 +96,10 @@ int material_contact_task(Sim *sim, void *state, Seam seam);
  *         material_contact_work. */
 int material_contact_history(const Sim *sim, void *state, FILE *f, int header);
 
+/** @brief Save or restore the contact's work and node count
+ *         (SEAM_CHECKPOINT). */
+int material_contact_checkpoint(Sim *sim, void *state, FILE *f, int save);
+
 /** @brief Release the state. */
 void material_contact_release(void *state);
 

@@ -2,6 +2,7 @@
  * @file energy_balance.c
  * @brief Energy in = energy stored + dissipated + error, per run.
  */
+#include "checkpoint.h"
 #include "energy_balance.h"
 
 #include <stdlib.h>
@@ -51,7 +52,8 @@ int energy_balance_prepare(Sim *sim, void *state, char *err, size_t errlen)
         memcpy(B->vx, sim->pts.vx, (size_t)n * sizeof(double));
         memcpy(B->vy, sim->pts.vy, (size_t)n * sizeof(double));
     }
-    if (hooks_on_report(&sim->hooks, energy_balance_report, B)) {
+    if (hooks_on_report(&sim->hooks, energy_balance_report, B) ||
+        hooks_on_checkpoint(&sim->hooks, energy_balance_checkpoint, B)) {
         snprintf(err, errlen, "%s: too many report hooks", sc->file);
         return -1;
     }
@@ -147,4 +149,18 @@ int energy_balance_report(const Sim *sim, void *state, FILE *f)
 int energy_balance_install(Hooks *h)
 {
     return hooks_on_prepare(h, energy_balance_prepare, NULL);
+}
+
+int energy_balance_checkpoint(Sim *sim, void *state, FILE *f, int save)
+{
+    EnergyBalance *B = state;
+    if (checkpoint_io(f, &B->e0, sizeof B->e0, save) ||
+        checkpoint_io(f, &B->w_ext, sizeof B->w_ext, save) ||
+        checkpoint_io(f, &B->w_damp, sizeof B->w_damp, save))
+        return -1;
+    if (!save && B->vx) {              /* Task 7 left them equal to the points' */
+        memcpy(B->vx, sim->pts.vx, (size_t)sim->pts.n * sizeof(double));
+        memcpy(B->vy, sim->pts.vy, (size_t)sim->pts.n * sizeof(double));
+    }
+    return 0;
 }

@@ -53,6 +53,9 @@ int energy_balance_damping(Sim *sim, void *state, Seam seam);
 /** @brief Print the balance line at the end of a run. */
 int energy_balance_report(const Sim *sim, void *state, FILE *f);
 
+/** @brief Save or restore the account's sums (SEAM_CHECKPOINT). */
+int energy_balance_checkpoint(Sim *sim, void *state, FILE *f, int save);
+
 /** @brief Subscribe the account's set-up (stage 5's installer). */
 int energy_balance_install(Hooks *h);
 

@@ -40,7 +40,7 @@ static void mpm_midplane(double sxx[NX + 1], double *opening)
     assert_true(t.kinetic < 1e-3 * t.strain);  /* static enough */
     *opening = 2 * (sim->pts.y[tip] - y0);
     assert_int_equal(output_make_dir("build/test-out"), 0);
-    assert_int_equal(output_grid_csv(sim, "build/test-out/fig2_grid.csv"), 0);
+    assert_int_equal(output_grid_csv(sim, "build/test-out", "fig2_grid.csv"), 0);
     FILE *f = fopen("build/test-out/fig2_grid.csv", "r");
     assert_non_null(f);
     char line[512];
