@@ -2,6 +2,7 @@
  * @file testkit.c
  * @brief Helpers shared by the test programs.
  */
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -69,14 +70,30 @@ void tk_free(Sim *sim)
     free(sim);
 }
 
-int tk_run_mpm(const char *args, char *out, size_t outlen)
+const char *tk_mpm_bin(void)
 {
     const char *bin = getenv("MPM_BIN");
     if (!bin || !*bin)
         fail_msg("MPM_BIN is not set (run the tests through make check)");
-    char cmd[2048];
-    snprintf(cmd, sizeof cmd, "%s %s 2>&1", bin, args);
+    return bin;
+}
+
+int tk_run_mpm(const char *args, char *out, size_t outlen)
+{
+    char cmd[4096];
+    if (snprintf(cmd, sizeof cmd, "exec %s %s", tk_mpm_bin(), args) >= (int)sizeof cmd)
+        fail_msg("command too long: %s", args);
+    return tk_shell(cmd, out, outlen);
+}
+
+int tk_shell(const char *command, char *out, size_t outlen)
+{
+    size_t n = strlen(command) + 8;
+    char *cmd = malloc(n);
+    assert_non_null(cmd);
+    snprintf(cmd, n, "%s 2>&1", command);
     FILE *p = popen(cmd, "r");
+    free(cmd);
     assert_non_null(p);
     size_t used = fread(out, 1, outlen - 1, p);
     out[used] = '\0';
@@ -108,4 +125,94 @@ char *tk_slurp(const char *path, size_t *len)
     if (len)
         *len = (size_t)n;
     return buf;
+}
+
+/** Names of the plain files of @p dir, sorted; returns how many. */
+static int dir_files(const char *dir, char (*names)[256], int max)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        fail_msg("cannot open the directory %s", dir);
+    int n = 0;
+    const struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        if (e->d_name[0] == '.')
+            continue;
+        if (n == max)
+            fail_msg("more than %d files in %s", max, dir);
+        snprintf(names[n++], 256, "%s", e->d_name);
+    }
+    closedir(d);
+    qsort(names, (size_t)n, sizeof names[0],
+          (int (*)(const void *, const void *))strcmp);
+    return n;
+}
+
+void tk_assert_same_outputs(const char *a, const char *b, const char *skip)
+{
+    static char na[512][256], nb[512][256];
+    int ka = dir_files(a, na, 512), kb = dir_files(b, nb, 512), j = 0;
+    for (int i = 0; i < ka; i++) {
+        if (skip && strcmp(na[i], skip) == 0)
+            continue;
+        while (j < kb && skip && strcmp(nb[j], skip) == 0)
+            j++;
+        if (j == kb || strcmp(na[i], nb[j]) != 0)
+            fail_msg("%s/%s has no twin in %s", a, na[i], b);
+        char pa[1024], pb[1024];
+        if (snprintf(pa, sizeof pa, "%s/%s", a, na[i]) >= (int)sizeof pa ||
+            snprintf(pb, sizeof pb, "%s/%s", b, nb[j++]) >= (int)sizeof pb)
+            fail_msg("path too long under %s", a);
+        size_t la, lb;
+        char *ca = tk_slurp(pa, &la), *cb = tk_slurp(pb, &lb);
+        if (la != lb || memcmp(ca, cb, la) != 0)
+            fail_msg("%s and %s differ", pa, pb);
+        free(ca);
+        free(cb);
+    }
+    while (j < kb && skip && strcmp(nb[j], skip) == 0)
+        j++;
+    if (j != kb)
+        fail_msg("%s/%s has no twin in %s", b, nb[j], a);
+}
+
+int tk_assert_outputs_whole(const char *dir)
+{
+    static char names[512][256];
+    int n = dir_files(dir, names, 512);
+    for (int i = 0; i < n; i++) {
+        const char *name = names[i];
+        size_t l = strlen(name), len;
+        if (l > 5 && strcmp(name + l - 5, ".part") == 0)
+            fail_msg("%s/%s: a file left half written", dir, name);
+        char path[1024];
+        if (snprintf(path, sizeof path, "%s/%s", dir, name) >= (int)sizeof path)
+            fail_msg("path too long under %s", dir);
+        char *text = tk_slurp(path, &len);
+        const char *ext = strrchr(name, '.');
+        if (ext && (!strcmp(ext, ".vtu") || !strcmp(ext, ".vtp") || !strcmp(ext, ".pvd"))) {
+            if (len < 11 || strcmp(text + len - 11, "</VTKFile>\n") != 0)
+                fail_msg("%s does not end with </VTKFile>", path);
+        } else if (ext && !strcmp(ext, ".csv")) {
+            /* every row ends, and has as many fields as the column names */
+            if (len == 0 || text[len - 1] != '\n')
+                fail_msg("%s ends in a cut row", path);
+            int want = -1, row = 0;
+            for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
+                if (line[0] == '#')
+                    continue;
+                int commas = 0;
+                for (const char *c = line; *c; c++)
+                    commas += *c == ',';
+                if (want < 0)
+                    want = commas;
+                else if (commas != want)
+                    fail_msg("%s: row %d has %d fields, the header %d", path, row,
+                             commas + 1, want + 1);
+                row++;
+            }
+        }
+        free(text);
+    }
+    return n;
 }

@@ -50,6 +50,22 @@ void tk_free(Sim *sim);
  *         into out, and return the exit status. */
 int tk_run_mpm(const char *args, char *out, size_t outlen);
 
+/** @brief The program under test ($MPM_BIN); fails the test when unset. */
+const char *tk_mpm_bin(void);
+
+/** @brief Run @p command through the shell, capture stdout and stderr into
+ *         out, and return the exit status (128 when it did not exit). */
+int tk_shell(const char *command, char *out, size_t outlen);
+
+/** @brief Fail unless directories @p a and @p b hold the same files with
+ *         the same bytes (a file named @p skip, if not NULL, is ignored). */
+void tk_assert_same_outputs(const char *a, const char *b, const char *skip);
+
+/** @brief Fail unless every output file in @p dir is whole: no ".part"
+ *         file, ParaView files end with </VTKFile>, CSV rows are whole.
+ *  @return the number of files. */
+int tk_assert_outputs_whole(const char *dir);
+
 /** @brief Read a whole file into a new NUL-terminated buffer (the caller
  *         frees it); its length in *len when @p len is not NULL. Fails the
  *         test when the file cannot be read. */
