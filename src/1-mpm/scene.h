@@ -124,7 +124,8 @@ typedef struct RunSettings {
 
 /** A complete scene. */
 typedef struct Scene {
-    char file[256];     /**< scene file name, for messages */
+    const char *file;   /**< scene file name, for messages (the caller's
+                             string, as given to sim_load_file()) */
     double ox;          /**< grid origin x */
     double oy;          /**< grid origin y */
     double dx;          /**< cell width */

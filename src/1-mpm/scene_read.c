@@ -782,7 +782,7 @@ int scene_read(Sim *sim, const config_t *cfg, SceneReader *r)
     static const char *const core[] = {"grid", "run", "materials", "bodies",
                                        "boundaries", "loads", "point_velocities", NULL};
     const config_setting_t *root = config_root_setting(cfg);
-    snprintf(sim->scene.file, sizeof sim->scene.file, "%s", r->file);
+    sim->scene.file = r->file;
     /* every top-level key: ours, a stage's section, a later stage's, or a typo */
     for (int k = 0; k < config_setting_length(root); k++) {
         const config_setting_t *s = config_setting_get_elem(root, (unsigned)k);
