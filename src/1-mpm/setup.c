@@ -79,19 +79,20 @@ static int initial_strain(const Scene *sc, int b, double e[3], char *err,
     return 0;
 }
 
-/** A point's mass in body @p b, rho x (cell / k)^2 x thickness, in the
- *  range whose sums and m v^2 stay finite: [1e-300, 1e300]. */
+/** A point's mass in body @p b, rho x (cell / k)^2 x thickness, and its
+ *  volume in the range whose sums and m v^2 stay finite: [1e-300, 1e300]. */
 static int check_point_mass(const Scene *sc, int b, char *err, size_t errlen)
 {
     const Body *B = &sc->bodies[b];
     double rho = sc->mat[B->material].rho;
     double vol = (sc->dx / B->ppc) * (sc->dy / B->ppc) * B->thickness;
     double m = rho * vol;
-    if (m >= 1e-300 && m <= 1e300)
+    if (m >= 1e-300 && m <= 1e300 && vol >= 1e-300 && vol <= 1e300)
         return 0;
     snprintf(err, errlen, "%s:%d: body \"%s\": a point's mass rho x volume = %g "
-             "x %g = %g is outside [1e-300, 1e300]: check rho, thickness and "
-             "cell_size", sc->file, B->line, B->name, rho, vol, m);
+             "x %g = %g: %s is outside [1e-300, 1e300]: check rho, thickness "
+             "and cell_size", sc->file, B->line, B->name, rho, vol, m,
+             m >= 1e-300 && m <= 1e300 ? "the volume" : "the mass");
     return -1;
 }
 

@@ -190,9 +190,11 @@ static void bad_overrides_are_refused(void **state)
         {"run.cfl=1e-308", "(run.cfl 1e-308,"},
         {"run.time=1e-308", "is not one step"},
         {"materials.[0].E=1e308", "gives no time step"},
-        {"bodies.[0].thickness=1e-308", "is outside [1e-300, 1e300]"},
-        {"materials.[0].rho=1e308", "is outside [1e-300, 1e300]"},
-        {"grid.cell_size=[1e200, 1e200]", "= inf is outside [1e-300, 1e300]"},
+        {"bodies.[0].thickness=1e-308", "the mass is outside [1e-300, 1e300]"},
+        {"materials.[0].rho=1e308", "the mass is outside [1e-300, 1e300]"},
+        {"grid.cell_size=[1e200, 1e200]", "= inf: the mass is outside [1e-300, 1e300]"},
+        {"bodies.[0].thickness=1e-305' 'materials.[0].rho=1e10", /* two */
+         "the volume is outside [1e-300, 1e300]"},
         {"bodies.[0].velocity=[1e309, 0.0]", "value inf is not finite"},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
