@@ -77,6 +77,7 @@ typedef struct Args {
     int quiet;           /**< -q */
     int restart;         /**< --restart */
     long stop_at;        /**< --stop-at, 0: none */
+    int named_out;       /**< -o was given */
 } Args;
 
 /** @return -1 to go on, else the exit status (after help or an error). */
@@ -89,6 +90,7 @@ static int parse_args(int argc, char **argv, Args *a)
             return 0;
         } else if (!strcmp(s, "-o") && k + 1 < argc) {
             a->outdir = argv[++k];
+            a->named_out = 1;
         } else if (!strcmp(s, "-q")) {
             a->quiet = 1;
         } else if (!strcmp(s, "--restart") && k + 1 < argc) {
@@ -116,9 +118,10 @@ static int parse_args(int argc, char **argv, Args *a)
             return 1;
         }
     }
-    if (a->restart && (a->scene || a->nover)) {
+    if (a->restart && (a->scene || a->nover || a->named_out)) {
         fprintf(stderr, "mpm: --restart takes the scene and its overrides from "
-                "the checkpoint; give neither\n");
+                "the checkpoint, and writes into its directory; give no scene, "
+                "override or -o\n");
         return 1;
     }
     if (!a->scene && !a->restart) {
@@ -171,7 +174,7 @@ done:
  *  it; the exit status is that of sim_run(), or 1 for bad input. */
 int main(int argc, char **argv)
 {
-    Args a = {NULL, "output", calloc((size_t)argc + 1, sizeof(char *)), 0, 0, 0, 0};
+    Args a = {NULL, "output", calloc((size_t)argc + 1, sizeof(char *)), 0, 0, 0, 0, 0};
     Sim *sim = malloc(sizeof *sim);
     if (!a.over || !sim) {
         fprintf(stderr, "mpm: out of memory\n");
