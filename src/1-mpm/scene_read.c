@@ -12,17 +12,23 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "scene_text.h"
+
 int scene_error(SceneReader *r, const config_setting_t *s, const char *key,
                 const char *fmt, ...)
 {
     int line = s ? (int)config_setting_source_line(s) : 0;
-    /* a setting from an @include'd file names that file */
-    const char *file = s && config_setting_source_file(s) ?
-                       config_setting_source_file(s) : r->file;
+    const char *file = r->file;
+    char chain[512] = "";
     int used;
-    if (line > 0)
+    if (line > 0) {
+        int part = scene_lines_find(r->lines, line, &file, &line);
+        if (part >= 0)        /* an @include'd file names it, and the chain */
+            scene_lines_chain(r->lines, part, chain, sizeof chain);
+        else if (config_setting_source_file(s))
+            file = config_setting_source_file(s);
         used = snprintf(r->err, r->errlen, "%s:%d: %s: ", file, line, key);
-    else if (s && !config_setting_is_root(s))  /* added by an override */
+    } else if (s && !config_setting_is_root(s))  /* added by an override */
         used = snprintf(r->err, r->errlen, "%s: %s (set on the command line): ",
                         r->file, key);
     else
@@ -31,8 +37,11 @@ int scene_error(SceneReader *r, const config_setting_t *s, const char *key,
         return -1;
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(r->err + used, r->errlen - (size_t)used, fmt, ap);
+    int more = vsnprintf(r->err + used, r->errlen - (size_t)used, fmt, ap);
     va_end(ap);
+    if (more >= 0 && (size_t)used + (size_t)more < r->errlen)
+        snprintf(r->err + used + more, r->errlen - (size_t)(used + more), "%s",
+                 chain);
     return -1;
 }
 
@@ -874,8 +883,19 @@ int scene_override(config_t *cfg, const char *assignment, char *err,
     config_t one;
     config_init(&one);
     config_setting_t *s = NULL;
+    TextScan scan = {TEXT_CODE, ""};
+    const char *bad;
+    int badlen;
     if (text) {
         snprintf(text, len, "v = %s;", value);
+        if (scene_text_scan(text, text + strlen(text), &scan, &bad, &badlen)) {
+            char why[256];
+            scene_text_range_message(bad, badlen, why, sizeof why);
+            snprintf(err, errlen, "override \"%s\": %s: %s", assignment, name, why);
+            config_destroy(&one);
+            free(text);
+            return -1;
+        }
         if (*value && config_read_string(&one, text) == CONFIG_TRUE)
             s = copy_setting(parent, name, config_lookup(&one, "v"));
         else if ((s = config_setting_add(parent, name, CONFIG_TYPE_STRING)) != NULL &&

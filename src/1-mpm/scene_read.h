@@ -16,10 +16,16 @@ typedef struct SceneReader {
     const char *file;  /**< scene file name */
     char *err;         /**< message buffer */
     size_t errlen;     /**< its size */
+    const SceneLines *lines; /**< where the tree's lines came from (NULL:
+                                  from the scene file itself) */
 } SceneReader;
 
 /**
  * @brief Write "file:line: key: message" into the reader's buffer.
+ *
+ * The file and line are those the setting @p s came from (an @@include
+ * file's own, with " (included from scene.cfg:3)" after the message); a
+ * setting an override set is named "key (set on the command line)".
  * @return -1, for the caller to return.
  */
 int scene_error(SceneReader *r, const config_setting_t *s, const char *key,

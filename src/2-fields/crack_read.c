@@ -192,8 +192,10 @@ int cracks_prepare(Sim *sim, void *state, char *err, size_t errlen)
             for (int b = 0; b < sc->nbodies && !inside; b++)
                 inside = shape_contains(&sc->bodies[b].shape, c->x[j], c->y[j]);
         if (!inside) {
-            snprintf(err, errlen, "%s:%d: cracks: crack %d lies outside every "
-                     "body", sc->file, c->line, k);
+            char at[SCENE_AT_LEN];
+            snprintf(err, errlen, "%s: cracks: crack %d lies outside every "
+                     "body", scene_lines_at(sc->lines, sc->file, c->line, at,
+                                            sizeof at), k);
             return -1;
         }
     }
