@@ -29,14 +29,11 @@ static int read_points(SceneReader *r, const config_setting_t *l, Crack *c)
             config_setting_length(e) != 2)
             return scene_error(r, e, "points", "point %d: expected [x, y]", k);
         for (int j = 0; j < 2; j++) {
-            const config_setting_t *v = config_setting_get_elem(e, (unsigned)j);
-            int vt = config_setting_type(v);
-            if (vt == CONFIG_TYPE_FLOAT)
-                xy[j] = config_setting_get_float(v);
-            else if (vt == CONFIG_TYPE_INT || vt == CONFIG_TYPE_INT64)
-                xy[j] = (double)config_setting_get_int64(v);
-            else
-                return scene_error(r, e, "points", "point %d: expected [x, y]", k);
+            int rc = scene_value(r, config_setting_get_elem(e, (unsigned)j),
+                                 "points", &xy[j]);
+            if (rc)
+                return rc < 0 ? -1 : scene_error(r, e, "points", "point %d: "
+                                                 "expected [x, y]", k);
         }
         c->x[k] = xy[0];
         c->y[k] = xy[1];

@@ -183,11 +183,17 @@ static void bad_overrides_are_refused(void **state)
     static const char *const cases[][2] = {
         {"nosuch.key=1", "override \"nosuch.key=1\": no group \"nosuch\""},
         {"=5", "override \"=5\": expected key.path=value"},
-        {"run.tme=5", "tme (set on the command line): unknown key"},
-        {"run.cfl=fast", "cfl (set on the command line): expected a number"},
-        {"grid.cells=5", "cells (set on the command line): expected two numbers"},
-        {"run.time=-1", "time (set on the command line): -1 must be > 0"},
-        /* integers libconfig would wrap, fractions (issue 10) */
+        /* a value found wrong names the override as typed (issue 10) */
+        {"run.tme=5", "override \"run.tme=5\": tme: unknown key"},
+        {"run.cfl=fast", "override \"run.cfl=fast\": cfl: expected a number"},
+        {"grid.cells=5", "override \"grid.cells=5\": cells: expected two numbers"},
+        {"run.time=-1", "override \"run.time=-1\": time: -1 must be > 0"},
+        {"materials.[0].E=-1", "override \"materials.[0].E=-1\": E: -1: Young's"},
+        {"bodies.[0].rectangle={min=[0,0];max=[0x5,5];}",
+         "override \"bodies.[0].rectangle={min=[0,0];max=[0x5,5];}\": max: 0x5 is "
+         "hexadecimal"},
+        /* hexadecimal, integers libconfig would wrap, fractions (issue 10) */
+        {"run.time=0x10", "override \"run.time=0x10\": time: 0x10 is hexadecimal"},
         {"grid.cells=[99999999999999999999, 20]", "override \"grid.cells=[99999"
          "999999999999999, 20]\": cells: 99999999999999999999 does not fit an integer"},
         {"materials.[0].E=3000000000", "E: 3000000000 does not fit an integer"},
