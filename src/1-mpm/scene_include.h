@@ -51,8 +51,11 @@ typedef struct SceneLines {
  * more than #SCENE_INCLUDE_DEPTH nested files is refused naming the
  * @@include line and the file it names. An @@include is read, as by
  * libconfig, at the start of a line outside strings and comments.
- * @param text  the text (the caller frees it)
- * @param lines its map (scene_lines_free())
+ * @param path   the scene file
+ * @param text   the text (the caller frees it)
+ * @param lines  its map (scene_lines_free())
+ * @param err    the message, when refused
+ * @param errlen its room
  * @return 0, or -1 with a message in @p err (nothing to free).
  */
 int scene_expand_file(const char *path, char **text, SceneLines **lines,
