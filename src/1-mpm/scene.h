@@ -10,6 +10,7 @@
 #define MPM_SCENE_H
 
 #include "material.h"
+#include "scene_include.h"
 #include "units.h"
 
 /** Kind of region a body fills. */
@@ -46,7 +47,8 @@ typedef struct Body {
     double stress[3];  /**< initial stress xx, yy, xy (MPa) */
     int ppc;           /**< k: k x k points per cell */
     Shape shape;       /**< region filled */
-    int line;          /**< scene-file line, for messages */
+    int line;          /**< line of the scene text, for messages
+                            (scene_lines_at() names its file) */
 } Body;
 
 /** A velocity held along x and/or y: constant, ramped in from zero, or
@@ -67,7 +69,8 @@ typedef struct Boundary {
     Shape region;      /**< rectangle: nodes in it (edges included) are held */
     Hold hold;         /**< the directions and the velocity */
     int moving;        /**< a velocity other than zero is prescribed */
-    int line;          /**< scene-file line, for messages */
+    int line;          /**< line of the scene text, for messages
+                            (scene_lines_at() names its file) */
 } Boundary;
 
 /** A force shared equally by the points inside a box. */
@@ -78,7 +81,8 @@ typedef struct Load {
     double ramp;       /**< time to reach full force (ms); 0 = constant */
     int count;         /**< number of points loaded */
     int *points;       /**< their indices */
-    int line;          /**< scene-file line, for messages */
+    int line;          /**< line of the scene text, for messages
+                            (scene_lines_at() names its file) */
 } Load;
 
 /** Points inside a box whose velocity is prescribed along x and/or y,
@@ -88,7 +92,8 @@ typedef struct HeldPoints {
     Hold hold;         /**< the directions and the velocity */
     int count;         /**< number of points held */
     int *points;       /**< their indices */
-    int line;          /**< scene-file line, for messages */
+    int line;          /**< line of the scene text, for messages
+                            (scene_lines_at() names its file) */
 } HeldPoints;
 
 /** A stress-update scheme: where in the step the stress is updated. */
@@ -126,6 +131,10 @@ typedef struct RunSettings {
 typedef struct Scene {
     const char *file;   /**< scene file name, for messages (the caller's
                              string, as given to sim_load_file()) */
+    SceneLines *lines;  /**< where each line of the scene's text (with its
+                             @@include files) came from: the lines kept
+                             below (Body::line, ...) are lines of that
+                             text; scene_lines_at() names them */
     double ox;          /**< grid origin x */
     double oy;          /**< grid origin y */
     double dx;          /**< cell width */

@@ -12,17 +12,36 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "scene_text.h"
+
+/** The override that set @p s or a setting holding it (its text, kept as
+ *  the setting's hook by scene_override()), or NULL. */
+static const char *override_of(const config_setting_t *s)
+{
+    for (; s && config_setting_source_line(s) == 0; s = config_setting_parent(s))
+        if (config_setting_get_hook(s))
+            return config_setting_get_hook(s);
+    return NULL;
+}
+
 int scene_error(SceneReader *r, const config_setting_t *s, const char *key,
                 const char *fmt, ...)
 {
     int line = s ? (int)config_setting_source_line(s) : 0;
-    /* a setting from an @include'd file names that file */
-    const char *file = s && config_setting_source_file(s) ?
-                       config_setting_source_file(s) : r->file;
+    const char *file = r->file, *over = override_of(s);
+    char chain[512] = "";
     int used;
-    if (line > 0)
+    if (line > 0) {
+        int part = scene_lines_find(r->lines, line, &file, &line);
+        if (part >= 0)        /* an @include'd file names it, and the chain */
+            scene_lines_chain(r->lines, part, chain, sizeof chain);
+        else if (config_setting_source_file(s))
+            file = config_setting_source_file(s);
         used = snprintf(r->err, r->errlen, "%s:%d: %s: ", file, line, key);
-    else if (s && !config_setting_is_root(s))  /* added by an override */
+    } else if (over)
+        used = snprintf(r->err, r->errlen, "%s: override \"%s\": %s: ", r->file,
+                        over, key);
+    else if (s && !config_setting_is_root(s))  /* added on the command line */
         used = snprintf(r->err, r->errlen, "%s: %s (set on the command line): ",
                         r->file, key);
     else
@@ -31,8 +50,11 @@ int scene_error(SceneReader *r, const config_setting_t *s, const char *key,
         return -1;
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(r->err + used, r->errlen - (size_t)used, fmt, ap);
+    int more = vsnprintf(r->err + used, r->errlen - (size_t)used, fmt, ap);
     va_end(ap);
+    if (more >= 0 && (size_t)used + (size_t)more < r->errlen)
+        snprintf(r->err + used + more, r->errlen - (size_t)(used + more), "%s",
+                 chain);
     return -1;
 }
 
@@ -53,6 +75,20 @@ static double number_of(const config_setting_t *s)
     return (double)config_setting_get_int(s);
 }
 
+int scene_value(SceneReader *r, const config_setting_t *e, const char *key,
+                double *out)
+{
+    if (!is_number(e))
+        return 1;
+    if (config_setting_get_format(e) == CONFIG_FORMAT_HEX)
+        return scene_error(r, e, key, "0x%llx is hexadecimal; write numbers in "
+                           "decimal", config_setting_type(e) == CONFIG_TYPE_INT ?
+                           (unsigned long long)(unsigned)config_setting_get_int(e) :
+                           (unsigned long long)config_setting_get_int64(e));
+    *out = number_of(e);
+    return 0;
+}
+
 int scene_number(SceneReader *r, const config_setting_t *group,
                  const char *key, int required, double def, double *out)
 {
@@ -60,9 +96,9 @@ int scene_number(SceneReader *r, const config_setting_t *group,
     *out = def;
     if (!s)
         return required ? scene_error(r, group, key, "missing (required)") : 0;
-    if (!is_number(s))
-        return scene_error(r, s, key, "expected a number");
-    *out = number_of(s);
+    int rc = scene_value(r, s, key, out);
+    if (rc)
+        return rc < 0 ? -1 : scene_error(r, s, key, "expected a number");
     if (!isfinite(*out))
         return scene_error(r, s, key, "value %g is not finite", *out);
     return 1;
@@ -83,9 +119,9 @@ int scene_numbers(SceneReader *r, const config_setting_t *group, const char *key
         return scene_error(r, s, key, "expected %s", form[n]);
     for (int k = 0; k < n; k++) {
         const config_setting_t *e = config_setting_get_elem(s, (unsigned)k);
-        if (!is_number(e))
-            return scene_error(r, s, key, "expected %s", form[n]);
-        out[k] = number_of(e);
+        int rc = scene_value(r, e, key, &out[k]);
+        if (rc)
+            return rc < 0 ? -1 : scene_error(r, s, key, "expected %s", form[n]);
         if (!isfinite(out[k]))
             return scene_error(r, s, key, "value %g is not finite", out[k]);
     }
@@ -268,14 +304,16 @@ static int read_polygon(SceneReader *r, const config_setting_t *s, Shape *sh)
     sh->xmax = sh->ymax = -INFINITY;
     for (int k = 0; k < n; k++) {
         const config_setting_t *e = config_setting_get_elem(s, (unsigned)k);
-        int t = config_setting_type(e);
-        if ((t != CONFIG_TYPE_ARRAY && t != CONFIG_TYPE_LIST) ||
-            config_setting_length(e) != 2 ||
-            !is_number(config_setting_get_elem(e, 0)) ||
-            !is_number(config_setting_get_elem(e, 1)))
+        int t = config_setting_type(e), rc = 1;
+        double x, y;
+        if ((t == CONFIG_TYPE_ARRAY || t == CONFIG_TYPE_LIST) &&
+            config_setting_length(e) == 2 &&
+            (rc = scene_value(r, config_setting_get_elem(e, 0), "polygon", &x)) == 0)
+            rc = scene_value(r, config_setting_get_elem(e, 1), "polygon", &y);
+        if (rc < 0)
+            return -1;
+        if (rc)
             return scene_error(r, e, "polygon", "point %d: expected [x, y]", k);
-        double x = number_of(config_setting_get_elem(e, 0));
-        double y = number_of(config_setting_get_elem(e, 1));
         sh->v[2 * k] = x;
         sh->v[2 * k + 1] = y;
         sh->xmin = fmin(sh->xmin, x);
@@ -651,11 +689,11 @@ static int read_hold_table(SceneReader *r, const config_setting_t *g, Hold *h,
         double *x = h->table + 3 * k;
         int n = config_setting_type(row) == CONFIG_TYPE_ARRAY ? config_setting_length(row) : 0;
         for (int j = 0; j < 3 && n == 3; j++) {
-            const config_setting_t *e = config_setting_get_elem(row, (unsigned)j);
-            if (!is_number(e))
-                n = 0;
-            else
-                x[j] = number_of(e);
+            int rc = scene_value(r, config_setting_get_elem(row, (unsigned)j),
+                                 "table", &x[j]);
+            if (rc < 0)
+                return -1;
+            n = rc ? 0 : n;
         }
         if (n != 3 || !isfinite(x[0] + x[1] + x[2]))
             return scene_error(r, row, "table", "row %d: expected three finite "
@@ -814,7 +852,8 @@ int scene_read(Sim *sim, const config_t *cfg, SceneReader *r)
 /* ---- command-line overrides "a.b.c=value" -------------------------------- */
 
 /** Add a copy of @p from to @p parent under @p name (NULL inside an array
- *  or list): scalars, arrays, lists and groups. NULL when it cannot. */
+ *  or list): scalars (with their format, hexadecimal or not), arrays,
+ *  lists and groups. NULL when it cannot. */
 static config_setting_t *copy_setting(config_setting_t *parent, const char *name,
                                       const config_setting_t *from)
 {
@@ -824,9 +863,11 @@ static config_setting_t *copy_setting(config_setting_t *parent, const char *name
         return NULL;
     switch (type) {
     case CONFIG_TYPE_INT:
-        return config_setting_set_int(s, config_setting_get_int(from)) ? s : NULL;
+        return config_setting_set_int(s, config_setting_get_int(from)) &&
+               config_setting_set_format(s, config_setting_get_format(from)) ? s : NULL;
     case CONFIG_TYPE_INT64:
-        return config_setting_set_int64(s, config_setting_get_int64(from)) ? s : NULL;
+        return config_setting_set_int64(s, config_setting_get_int64(from)) &&
+               config_setting_set_format(s, config_setting_get_format(from)) ? s : NULL;
     case CONFIG_TYPE_FLOAT:
         return config_setting_set_float(s, config_setting_get_float(from)) ? s : NULL;
     case CONFIG_TYPE_BOOL:
@@ -881,8 +922,19 @@ int scene_override(config_t *cfg, const char *assignment, char *err,
     config_t one;
     config_init(&one);
     config_setting_t *s = NULL;
+    TextScan scan = {TEXT_CODE, ""};
+    const char *bad;
+    int badlen;
     if (text) {
         snprintf(text, len, "v = %s;", value);
+        if (scene_text_scan(text, text + strlen(text), &scan, &bad, &badlen)) {
+            char why[256];
+            scene_text_range_message(bad, badlen, why, sizeof why);
+            snprintf(err, errlen, "override \"%s\": %s: %s", assignment, name, why);
+            config_destroy(&one);
+            free(text);
+            return -1;
+        }
         if (*value && config_read_string(&one, text) == CONFIG_TRUE)
             s = copy_setting(parent, name, config_lookup(&one, "v"));
         else if ((s = config_setting_add(parent, name, CONFIG_TYPE_STRING)) != NULL &&
@@ -895,5 +947,7 @@ int scene_override(config_t *cfg, const char *assignment, char *err,
         snprintf(err, errlen, "override \"%s\": cannot set \"%s\"", assignment, name);
         return -1;
     }
+    /* scene_error() names a value found wrong in it by the override */
+    config_setting_set_hook(s, (void *)assignment);
     return 0;
 }

@@ -16,14 +16,28 @@ typedef struct SceneReader {
     const char *file;  /**< scene file name */
     char *err;         /**< message buffer */
     size_t errlen;     /**< its size */
+    const SceneLines *lines; /**< where the tree's lines came from (NULL:
+                                  from the scene file itself) */
 } SceneReader;
 
 /**
  * @brief Write "file:line: key: message" into the reader's buffer.
+ *
+ * The file and line are those the setting @p s came from (an @@include
+ * file's own, with " (included from scene.cfg:3)" after the message); a
+ * setting an override set is named by the override as typed:
+ * "scene.cfg: override \"materials.[0].E=-1\": E: message".
  * @return -1, for the caller to return.
  */
 int scene_error(SceneReader *r, const config_setting_t *s, const char *key,
                 const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+
+/** @brief The number setting @p e holds (integer or real) into *out.
+ *  @return 0; 1 when @p e is not a number (no message: the caller says
+ *          what it expected); -1 with a message naming @p key when it is
+ *          written in hexadecimal (not for physical quantities). */
+int scene_value(SceneReader *r, const config_setting_t *e, const char *key,
+                double *out);
 
 /** @brief A number (integer or real) under @p key of @p group.
  *  @return 1 found, 0 absent (with *out = def), -1 wrong type or absent and

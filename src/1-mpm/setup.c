@@ -48,6 +48,12 @@ static int fill_body(Sim *sim, int b, const double e0[3])
 }
 /// [fill_body]
 
+/** "file:line" of body @p B into @p at (SCENE_AT_LEN). */
+static const char *body_at(const Scene *sc, const Body *B, char *at)
+{
+    return scene_lines_at(sc->lines, sc->file, B->line, at, SCENE_AT_LEN);
+}
+
 /** The strain @p e that carries body @p b's initial stress, checked
  *  against the range of a small-strain law: principal strains in (-1, 1),
  *  so that no point's area (1 + e1)(1 + e2) A vanishes. */
@@ -57,12 +63,13 @@ static int initial_strain(const Scene *sc, int b, double e[3], char *err,
     const Body *B = &sc->bodies[b];
     const Material *mat = &sc->mat[B->material];
     const double *s = B->stress;
+    char at[SCENE_AT_LEN];
     e[0] = e[1] = e[2] = 0.0;
     if (s[0] == 0.0 && s[1] == 0.0 && s[2] == 0.0)
         return 0;
     if (!mat->law->strain) {
-        snprintf(err, errlen, "%s:%d: stress: material \"%s\" (law \"%s\") "
-                 "takes no initial stress", sc->file, B->line, mat->name,
+        snprintf(err, errlen, "%s: stress: material \"%s\" (law \"%s\") "
+                 "takes no initial stress", body_at(sc, B, at), mat->name,
                  mat->law->name);
         return -1;
     }
@@ -70,9 +77,9 @@ static int initial_strain(const Scene *sc, int b, double e[3], char *err,
     double mean = 0.5 * (e[0] + e[1]);
     double rad = sqrt(0.25 * (e[0] - e[1]) * (e[0] - e[1]) + e[2] * e[2]);
     if (!(mean + rad < 1.0 && mean - rad > -1.0)) {
-        snprintf(err, errlen, "%s:%d: stress: [%g, %g, %g] %s is outside the "
+        snprintf(err, errlen, "%s: stress: [%g, %g, %g] %s is outside the "
                  "range of material \"%s\": its principal strains %g and %g "
-                 "must lie in (-1, 1)", sc->file, B->line, s[0], s[1], s[2],
+                 "must lie in (-1, 1)", body_at(sc, B, at), s[0], s[1], s[2],
                  sc->run.units->stress, mat->name, mean + rad, mean - rad);
         return -1;
     }
@@ -89,9 +96,10 @@ static int check_point_mass(const Scene *sc, int b, char *err, size_t errlen)
     double m = rho * vol;
     if (m >= 1e-300 && m <= 1e300 && vol >= 1e-300 && vol <= 1e300)
         return 0;
-    snprintf(err, errlen, "%s:%d: body \"%s\": a point's mass rho x volume = %g "
+    char at[SCENE_AT_LEN];
+    snprintf(err, errlen, "%s: body \"%s\": a point's mass rho x volume = %g "
              "x %g = %g: %s is outside [1e-300, 1e300]: check rho, thickness "
-             "and cell_size", sc->file, B->line, B->name, rho, vol, m,
+             "and cell_size", body_at(sc, B, at), B->name, rho, vol, m,
              m >= 1e-300 && m <= 1e300 ? "the volume" : "the mass");
     return -1;
 }
@@ -113,9 +121,10 @@ int setup_points(Sim *sim, char *err, size_t errlen)
             return -1;
         }
         if (sim->pts.n == before) {
-            snprintf(err, errlen, "%s:%d: body \"%s\" holds no material point "
-                     "(shape smaller than a point spacing?)", sc->file,
-                     sc->bodies[b].line, sc->bodies[b].name);
+            char at[SCENE_AT_LEN];
+            snprintf(err, errlen, "%s: body \"%s\" holds no material point "
+                     "(shape smaller than a point spacing?)",
+                     body_at(sc, &sc->bodies[b], at), sc->bodies[b].name);
             return -1;
         }
     }
@@ -150,11 +159,20 @@ int setup_grid(Sim *sim, char *err, size_t errlen)
                 continue;
             int o = owner[n];
             if (o >= 0 && (B->moving || sc->bc[o].moving)) {
-                snprintf(err, errlen, "%s:%d: boundaries: the node at (%g, %g) is "
-                         "also held by the boundary at line %d; a prescribed "
+                char at[SCENE_AT_LEN], other[SCENE_AT_LEN];
+                const char *f1 = sc->file, *f2 = sc->file;
+                int l1 = B->line, l2 = sc->bc[o].line;
+                scene_lines_find(sc->lines, B->line, &f1, &l1);
+                scene_lines_find(sc->lines, sc->bc[o].line, &f2, &l2);
+                if (strcmp(f1, f2) == 0)           /* "line 9", or "a.cfg:9" */
+                    snprintf(other, sizeof other, "line %d", l2);
+                else
+                    snprintf(other, sizeof other, "%s:%d", f2, l2);
+                snprintf(err, errlen, "%s: boundaries: the node at (%g, %g) is "
+                         "also held by the boundary at %s; a prescribed "
                          "velocity and another hold on one node contradict",
-                         sc->file, B->line, grid_node_x(g, n), grid_node_y(g, n),
-                         sc->bc[o].line);
+                         scene_lines_at(sc->lines, sc->file, B->line, at, sizeof at),
+                         grid_node_x(g, n), grid_node_y(g, n), other);
                 free(owner);
                 return -1;
             }
@@ -198,8 +216,10 @@ static int points_in(const Particles *P, const Shape *region, int **points)
 static int no_point_in(const Scene *sc, const char *what, int line,
                        const Shape *r, char *err, size_t errlen)
 {
-    snprintf(err, errlen, "%s:%d: %s: no material point lies in [%g, %g] x "
-             "[%g, %g]", sc->file, line, what, r->xmin, r->xmax, r->ymin, r->ymax);
+    char at[SCENE_AT_LEN];
+    snprintf(err, errlen, "%s: %s: no material point lies in [%g, %g] x "
+             "[%g, %g]", scene_lines_at(sc->lines, sc->file, line, at, sizeof at),
+             what, r->xmin, r->xmax, r->ymin, r->ymax);
     return -1;
 }
 
@@ -241,10 +261,13 @@ int setup_held_points(Sim *sim, char *err, size_t errlen)
             for (int a = 0; a < 4; a++) {
                 int n = (j0 + a / 2) * g->nnx + i0 + a % 2;
                 if (g->fixed[n]) {
-                    snprintf(err, errlen, "%s:%d: point_velocities: the point at "
+                    char at[SCENE_AT_LEN];
+                    snprintf(err, errlen, "%s: point_velocities: the point at "
                              "(%g, %g) reaches the node at (%g, %g), which a "
-                             "boundary holds; the two holds contradict", sc->file,
-                             H->line, P->x[p], P->y[p], grid_node_x(g, n),
+                             "boundary holds; the two holds contradict",
+                             scene_lines_at(sc->lines, sc->file, H->line, at,
+                                            sizeof at),
+                             P->x[p], P->y[p], grid_node_x(g, n),
                              grid_node_y(g, n));
                     return -1;
                 }

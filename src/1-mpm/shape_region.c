@@ -56,4 +56,6 @@ void scene_free(Scene *sc)
     sc->bc = NULL;
     sc->loads = NULL;
     sc->nmat = sc->nbodies = sc->nbc = sc->nloads = 0;
+    scene_lines_free(sc->lines);
+    sc->lines = NULL;
 }

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "checkpoint.h"
+#include "scene_include.h"
 #include "scene_read.h"
 #include "setup.h"
 
@@ -59,7 +60,7 @@ static int prepare_stages(Sim *sim, const char *name, char *err, size_t errlen)
 static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
                        size_t errlen)
 {
-    SceneReader r = {name, err, errlen};
+    SceneReader r = {name, err, errlen, sim->scene.lines};
     if (sim->hooks.overflow) {
         snprintf(err, errlen, "%s: this build's stages register more than "
                  "HOOKS_MAX (%d) entries in one table (raise it in hooks.h)",
@@ -81,59 +82,68 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
     return sim_check_time_step(sim, err, errlen);
 }
 
-static int syntax_error(const config_t *cfg, const char *name, char *err,
-                        size_t errlen)
+/** libconfig's refusal at its line of the expanded text, in the file and
+ *  line it came from ("syntax error", "duplicate setting name", ...). */
+static int syntax_error(const config_t *cfg, const SceneLines *m,
+                        const char *name, char *err, size_t errlen)
 {
-    const char *where = config_error_file(cfg) ? config_error_file(cfg) : name;
-    if (config_error_type(cfg) == CONFIG_ERR_FILE_IO)
-        snprintf(err, errlen, "%s: cannot read the file", where);
-    else
-        snprintf(err, errlen, "%s:%d: syntax error: %s", where,
-                 config_error_line(cfg), config_error_text(cfg));
+    const char *file = name;
+    int line = config_error_line(cfg);
+    char chain[512] = "";
+    int part = scene_lines_find(m, line, &file, &line);
+    if (part >= 0)
+        scene_lines_chain(m, part, chain, sizeof chain);
+    const char *text = config_error_text(cfg);
+    const char *hint = strcmp(text, "mismatched element type in array") == 0 ?
+        " (an array holds integers only or reals only: 2.0, not 2, beside 0.5)" : "";
+    snprintf(err, errlen, "%s:%d: %s%s%s", file, line, text, hint, chain);
     return -1;
+}
+
+/** Read the expanded @p text (or the error of its expansion, @p rc) and
+ *  the overrides into a tree, then load it. */
+static int load_text(Sim *sim, int rc, const char *text, const char *name,
+                     int noverrides, char *const *overrides, char *err,
+                     size_t errlen)
+{
+    config_t cfg;
+    config_init(&cfg);
+    if (rc == 0 && config_read_string(&cfg, text) != CONFIG_TRUE)
+        rc = syntax_error(&cfg, sim->scene.lines, name, err, errlen);
+    for (int k = 0; rc == 0 && k < noverrides; k++)
+        rc = scene_override(&cfg, overrides[k], err, errlen);
+    sim->source = name;                /* what a checkpoint names */
+    sim->noverrides = noverrides;
+    sim->overrides = overrides;
+    sim->scene_hash = checkpoint_fingerprint(&cfg);
+    if (rc == 0)
+        rc = load_config(sim, &cfg, name, err, errlen);
+    config_destroy(&cfg);
+    return rc;
 }
 
 int sim_load_file(Sim *sim, const char *path, int noverrides,
                   char *const *overrides, char *err, size_t errlen)
 {
-    config_t cfg;
-    config_init(&cfg);
-    /* @include "other.cfg" is read relative to the scene's folder */
-    char dir[1024];
-    snprintf(dir, sizeof dir, "%s", path);
-    char *slash = strrchr(dir, '/');
-    if (slash) {
-        *slash = '\0';
-        config_set_include_dir(&cfg, dir);
-    }
-    int rc = 0;
-    if (config_read_file(&cfg, path) != CONFIG_TRUE)
-        rc = syntax_error(&cfg, path, err, errlen);
-    for (int k = 0; rc == 0 && k < noverrides; k++)
-        rc = scene_override(&cfg, overrides[k], err, errlen);
-    sim->source = path;
-    sim->noverrides = noverrides;
-    sim->overrides = overrides;
-    sim->scene_hash = checkpoint_fingerprint(&cfg);
-    if (rc == 0)
-        rc = load_config(sim, &cfg, path, err, errlen);
-    config_destroy(&cfg);
+    /* @include "other.cfg" is read relative to the file that names it */
+    char *text = NULL;
+    scene_lines_free(sim->scene.lines);
+    sim->scene.lines = NULL;
+    int rc = scene_expand_file(path, &text, &sim->scene.lines, err, errlen);
+    rc = load_text(sim, rc, text, path, noverrides, overrides, err, errlen);
+    free(text);
     return rc;
 }
 
 int sim_load_string(Sim *sim, const char *text, const char *name, char *err,
                     size_t errlen)
 {
-    config_t cfg;
-    config_init(&cfg);
-    int rc = 0;
-    if (config_read_string(&cfg, text) != CONFIG_TRUE)
-        rc = syntax_error(&cfg, name, err, errlen);
-    sim->source = name;
-    sim->scene_hash = checkpoint_fingerprint(&cfg);
-    if (rc == 0)
-        rc = load_config(sim, &cfg, name, err, errlen);
-    config_destroy(&cfg);
+    char *all = NULL;
+    scene_lines_free(sim->scene.lines);
+    sim->scene.lines = NULL;
+    int rc = scene_expand_string(text, name, &all, &sim->scene.lines, err, errlen);
+    rc = load_text(sim, rc, all, name, 0, NULL, err, errlen);
+    free(all);
     return rc;
 }
 

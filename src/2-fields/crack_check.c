@@ -2,6 +2,12 @@
  * @file crack_check.c
  * @brief A crack may not cross itself: the check, binned so that a crack
  *        of many segments is checked in time about proportional to them.
+ *
+ * The bins are about square, about as many as segments: a crack whose
+ * segments are short beside its extent (a line, an arc, a zigzag) puts a
+ * few in each.  Long segments packed close together (an accordion of
+ * strokes across the whole crack) still share bins, and cost about the
+ * square of those that do.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -42,7 +48,7 @@ static int bin_of(double v, double lo, double w, int nb)
 /// [crack_self_crossing]
 int crack_self_crossing(const Crack *c, int *i, int *j)
 {
-    int ns = c->n - 1, nb = (int)ceil(sqrt((double)ns));
+    int ns = c->n - 1;
     double x0 = c->x[0], x1 = c->x[0], y0 = c->y[0], y1 = c->y[0];
     for (int k = 1; k < c->n; k++) {
         x0 = fmin(x0, c->x[k]);
@@ -50,31 +56,44 @@ int crack_self_crossing(const Crack *c, int *i, int *j)
         y0 = fmin(y0, c->y[k]);
         y1 = fmax(y1, c->y[k]);
     }
+    /* about ns square bins over the box (a thin crack gets a row of them:
+       bins as many along each side would hold a whole column of segments
+       each), at least one and at most ns along a side */
+    double side = sqrt((x1 - x0) * (y1 - y0) / ns);
+    if (!(side > 0))                        /* a straight crack */
+        side = fmax(x1 - x0, y1 - y0) / ns;
+    int nbx = 1, nby = 1;
+    if (side > 0) {
+        nbx = (int)fmin(fmax(ceil((x1 - x0) / side), 1), ns);
+        nby = (int)fmin(fmax(ceil((y1 - y0) / side), 1), ns);
+    }
     /* bins a little larger than the box, so that every end point is in */
-    double wx = (x1 - x0) / nb * (1 + 1e-9) + 1e-300;
-    double wy = (y1 - y0) / nb * (1 + 1e-9) + 1e-300;
-    int *count = calloc((size_t)nb * nb + 1, sizeof(int)), *list = NULL;
+    double wx = (x1 - x0) / nbx * (1 + 1e-9) + 1e-300;
+    double wy = (y1 - y0) / nby * (1 + 1e-9) + 1e-300;
+    size_t nbins = (size_t)nbx * (size_t)nby;
+    int *count = calloc(nbins + 1, sizeof(int)), *list = NULL;
     int total = 0, found = 0;
     if (!count)
         return -1;
     for (int pass = 0; pass < 2; pass++) {   /* count, then fill (CSR) */
         for (int s = 0; s < ns; s++) {
-            int bx0 = bin_of(fmin(c->x[s], c->x[s + 1]), x0, wx, nb);
-            int bx1 = bin_of(fmax(c->x[s], c->x[s + 1]), x0, wx, nb);
-            int by0 = bin_of(fmin(c->y[s], c->y[s + 1]), y0, wy, nb);
-            int by1 = bin_of(fmax(c->y[s], c->y[s + 1]), y0, wy, nb);
+            int bx0 = bin_of(fmin(c->x[s], c->x[s + 1]), x0, wx, nbx);
+            int bx1 = bin_of(fmax(c->x[s], c->x[s + 1]), x0, wx, nbx);
+            int by0 = bin_of(fmin(c->y[s], c->y[s + 1]), y0, wy, nby);
+            int by1 = bin_of(fmax(c->y[s], c->y[s + 1]), y0, wy, nby);
             for (int by = by0; by <= by1; by++)
                 for (int bx = bx0; bx <= bx1; bx++) {
+                    size_t b = (size_t)by * (size_t)nbx + (size_t)bx;
                     if (pass == 0)
-                        count[by * nb + bx + 1]++;
+                        count[b + 1]++;
                     else
-                        list[count[by * nb + bx]++] = s;
+                        list[count[b]++] = s;
                 }
         }
         if (pass == 0) {                     /* count[b]: start of bin b */
-            for (int b = 0; b < nb * nb; b++)
+            for (size_t b = 0; b < nbins; b++)
                 count[b + 1] += count[b];
-            total = count[nb * nb];
+            total = count[nbins];
             list = malloc(sizeof(int) * ((size_t)total + 1));
             if (!list) {
                 free(count);
@@ -82,13 +101,17 @@ int crack_self_crossing(const Crack *c, int *i, int *j)
             }
         }
     }
-    /* after the fill, bin b holds list[count[b - 1] .. count[b]) (b > 0) */
-    for (int b = 0; b < nb * nb; b++) {
+    /* after the fill, bin b holds list[count[b - 1] .. count[b]) (b > 0),
+       its segments in increasing order: the pairs (s, t), s < t */
+    for (size_t b = 0; b < nbins; b++) {
         int from = b ? count[b - 1] : 0, to = count[b];
-        for (int u = from; u < to; u++)
-            for (int v = from; v < to; v++) {
-                int s = list[u], t = list[v];
-                if (t < s + 2 || (found && (s > *i || (s == *i && t >= *j))))
+        for (int u = from; u < to; u++) {
+            int s = list[u];
+            if (found && s > *i)
+                break;
+            for (int v = u + 1; v < to; v++) {
+                int t = list[v];
+                if (t < s + 2 || (found && s == *i && t >= *j))
                     continue;
                 double a[2] = {c->x[s], c->y[s]}, e[2] = {c->x[s + 1], c->y[s + 1]};
                 double f[2] = {c->x[t], c->y[t]}, g[2] = {c->x[t + 1], c->y[t + 1]};
@@ -98,6 +121,7 @@ int crack_self_crossing(const Crack *c, int *i, int *j)
                     found = 1;
                 }
             }
+        }
     }
     free(count);
     free(list);

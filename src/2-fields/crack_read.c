@@ -29,14 +29,11 @@ static int read_points(SceneReader *r, const config_setting_t *l, Crack *c)
             config_setting_length(e) != 2)
             return scene_error(r, e, "points", "point %d: expected [x, y]", k);
         for (int j = 0; j < 2; j++) {
-            const config_setting_t *v = config_setting_get_elem(e, (unsigned)j);
-            int vt = config_setting_type(v);
-            if (vt == CONFIG_TYPE_FLOAT)
-                xy[j] = config_setting_get_float(v);
-            else if (vt == CONFIG_TYPE_INT || vt == CONFIG_TYPE_INT64)
-                xy[j] = (double)config_setting_get_int64(v);
-            else
-                return scene_error(r, e, "points", "point %d: expected [x, y]", k);
+            int rc = scene_value(r, config_setting_get_elem(e, (unsigned)j),
+                                 "points", &xy[j]);
+            if (rc)
+                return rc < 0 ? -1 : scene_error(r, e, "points", "point %d: "
+                                                 "expected [x, y]", k);
         }
         c->x[k] = xy[0];
         c->y[k] = xy[1];
@@ -193,8 +190,10 @@ int cracks_prepare(Sim *sim, void *state, char *err, size_t errlen)
             for (int b = 0; b < sc->nbodies && !inside; b++)
                 inside = shape_contains(&sc->bodies[b].shape, c->x[j], c->y[j]);
         if (!inside) {
-            snprintf(err, errlen, "%s:%d: cracks: crack %d lies outside every "
-                     "body", sc->file, c->line, k);
+            char at[SCENE_AT_LEN];
+            snprintf(err, errlen, "%s: cracks: crack %d lies outside every "
+                     "body", scene_lines_at(sc->lines, sc->file, c->line, at,
+                                            sizeof at), k);
             return -1;
         }
     }

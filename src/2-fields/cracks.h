@@ -18,7 +18,8 @@ typedef struct Crack {
     double xmax;    /**< extent */
     double ymin;    /**< extent */
     double ymax;    /**< extent */
-    int line;       /**< scene-file line, for messages */
+    int line;       /**< line of the scene text, for messages
+                         (scene_lines_at() names its file) */
 } Crack;
 
 /** One crossing of a particle-node line with a crack segment. */

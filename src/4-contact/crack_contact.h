@@ -15,7 +15,8 @@
 typedef struct CrackContact {
     ContactLaw law;      /**< kind CONTACT_NONE: the crack has no contact */
     double vcell;        /**< undeformed cell volume dx dy t (eq. 10) */
-    int line;            /**< scene-file line of the settings */
+    int line;            /**< line of the settings in the scene text
+                              (scene_lines_at() names its file) */
 } CrackContact;
 /// [crack_contact_settings]
 

@@ -3,14 +3,19 @@
  * @brief The self-crossing check of a crack, binned, against the
  *        definition checked pair by pair: random walks on an integer
  *        lattice (so that segments touch, overlap and cross exactly),
- *        the same answer and the same first pair.
+ *        the same answer and the same first pair; and cracks of 100,000
+ *        segments read through a scene, one that does not cross itself
+ *        and one that does near its far end.
  */
 #include "testkit.h"
 
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "cracks.h"
+#include "scene_text.h"
 
 static uint64_t next_random(uint64_t *s)
 {
@@ -93,10 +98,88 @@ static void binned_check_equals_every_pair(void **state)
     assert_true(crossing > 1000 && clean > 1000);
 }
 
+/** A scene with one crack through the points (2k, 2 (k % 2)), k < n, of a
+ *  lattice, scaled into its 10 x 10 mm block, and @p last when not NULL
+ *  as one more point: the crack's points in @p p. */
+static char *long_crack_scene(int n, const long *last, long (*p)[2])
+{
+    SceneBuf b = {NULL, 0, 0};
+    const char *head = "grid = { origin = [0.0, 0.0]; cells = [12, 12]; cell_size = [1.0, 1.0]; };\n"
+        "run = { time = 0.01; snapshots = 0; };\n"
+        "materials = ( { name = \"gel\"; E = 0.1; nu = 0.33; rho = 1.5e-3; } );\n"
+        "bodies = ( { name = \"block\"; material = \"gel\";\n"
+        "  rectangle = { min = [1.0, 1.0]; max = [11.0, 11.0]; }; } );\n"
+        "cracks = ( { points = (\n";
+    assert_int_equal(scene_buf_add(&b, head, strlen(head)), 0);
+    for (int k = 0; k < n + (last != NULL); k++) {
+        char row[96];
+        p[k][0] = k < n ? 2L * k : last[0];
+        p[k][1] = k < n ? 2L * (k % 2) : last[1];
+        /* 4e-5 mm a lattice step: 100,000 points span 8 mm from x = 2 */
+        int len = snprintf(row, sizeof row, "%s[%.17e, %.17e]\n", k ? "," : "",
+                           2.0 + 4e-5 * (double)p[k][0], 6.0 + 4e-5 * (double)p[k][1]);
+        assert_int_equal(scene_buf_add(&b, row, (size_t)len), 0);
+    }
+    assert_int_equal(scene_buf_add(&b, "); } );\n", 8), 0);
+    return b.s;
+}
+
+/** A fine zigzag of 100,000 segments does not cross itself: read,
+ *  checked and accepted in well under a second (with as many bins along
+ *  y as along x, this thin crack put some 300 segments in each bin and
+ *  took over half a minute). */
+static void long_zigzag_is_accepted(void **state)
+{
+    (void)state;
+    enum { N = 100001 };
+    long (*p)[2] = malloc(sizeof *p * (N + 1));
+    assert_non_null(p);
+    char *text = long_crack_scene(N, NULL, p), err[1024];
+    Sim *sim = tk_load_with(text, NULL, NULL, err, sizeof err);
+    if (!sim)
+        fail_msg("a zigzag of %d segments refused: %s", N - 1, err);
+    const Cracks *C = cracks_of(sim);
+    assert_non_null(C);
+    assert_int_equal(C->crack[0].n, N);
+    tk_free(sim);
+    free(text);
+    free(p);
+}
+
+/** The same zigzag with one more segment that turns back across it near
+ *  its far end is refused, naming the first pair the definition finds. */
+static void long_crack_crossing_near_its_end_is_refused(void **state)
+{
+    (void)state;
+    enum { N = 100001 };
+    long (*p)[2] = malloc(sizeof *p * (N + 1));
+    assert_non_null(p);
+    const long last[2] = {2L * (N - 6) + 1, 3};      /* back over the zigzag */
+    char *text = long_crack_scene(N, last, p), err[1024];
+    int t = N - 1, first = -1;                      /* the last segment */
+    for (int s = 0; s + 2 <= t && first < 0; s++)
+        if (meet(p[s], p[s + 1], p[t], p[t + 1]))
+            first = s;
+    assert_true(first > N - 10);                    /* near the far end */
+    Sim *sim = tk_load_with(text, NULL, NULL, err, sizeof err);
+    if (sim)
+        fail_msg("a crack that crosses itself (segments %d and %d) was accepted",
+                 first, t);
+    char want[128];
+    snprintf(want, sizeof want, "the crack crosses itself (segments %d and %d)",
+             first, t);
+    if (!strstr(err, want))
+        fail_msg("message lacks \"%s\": %s", want, err);
+    free(text);
+    free(p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(binned_check_equals_every_pair),
+        cmocka_unit_test(long_zigzag_is_accepted),
+        cmocka_unit_test(long_crack_crossing_near_its_end_is_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
