@@ -13,7 +13,7 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-        "usage: mpm SCENE [-o OUTDIR] [-q] [key.path=value ...]\n"
+        "usage: mpm SCENE [-o OUTDIR] [-q] [--max-memory MB] [key.path=value ...]\n"
         "\n"
         "Run the material point method (stage %d of the book) on SCENE, a\n"
         "libconfig file in units of mm, g and ms (force N, stress MPa,\n"
@@ -21,6 +21,8 @@ static void usage(FILE *f)
         "\n"
         "  -o OUTDIR   write output here (default: output)\n"
         "  -q          no progress line\n"
+        "  --max-memory MB  refuse a scene estimated to need more than MB\n"
+        "              megabytes (10^6 bytes; default: the memory available)\n"
         "  -h, --help  this text\n"
         "  key.path=value  override a scene setting, e.g. run.update=usf\n"
         "                  run.time=2.5 run.cfl=0.2 run.snapshots=0\n"
@@ -39,6 +41,7 @@ int main(int argc, char **argv)
     const char *scene = NULL, *outdir = "output";
     char **over = calloc((size_t)argc + 1, sizeof(char *));
     int nover = 0, quiet = 0;
+    double max_mb = 0.0;
     if (!over)
         return 1;
     for (int k = 1; k < argc; k++) {
@@ -50,6 +53,15 @@ int main(int argc, char **argv)
             outdir = argv[++k];
         } else if (!strcmp(argv[k], "-q")) {
             quiet = 1;
+        } else if (!strcmp(argv[k], "--max-memory") && k + 1 < argc) {
+            char *end;
+            max_mb = strtod(argv[++k], &end);
+            if (end == argv[k] || *end || !(max_mb >= 1e-6 && max_mb <= 1e12)) {
+                fprintf(stderr, "mpm: --max-memory %s: expected megabytes in "
+                        "[1e-6, 1e12]\n", argv[k]);
+                free(over);
+                return 1;
+            }
         } else if (argv[k][0] == '-') {
             fprintf(stderr, "mpm: unknown option %s\n", argv[k]);
             usage(stderr);
@@ -76,6 +88,7 @@ int main(int argc, char **argv)
         return 1;
     }
     sim_init(sim);
+    sim->memory_limit = (size_t)(max_mb * 1e6);
     mpm_install_stages(&sim->hooks);
     char err[1024];
     if (sim_load_file(sim, scene, nover, over, err, sizeof err)) {

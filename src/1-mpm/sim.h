@@ -52,6 +52,8 @@ typedef struct Sim {
     int *moving;        /**< those nodes */
     int *moving_bc;     /**< the boundary (Scene::bc) that holds each */
     double loop_seconds; /**< wall time of sim_run()'s time loop, output included */
+    size_t memory_limit; /**< bytes a scene may need (footprint.h), set
+                              before loading; 0: the memory available */
 } Sim;
 
 /** Quantities that history.csv records at one instant. */
@@ -75,7 +77,9 @@ void *sim_state(const Sim *sim, const char *name);
 
 /**
  * @brief Read a scene file, apply "key.path=value" overrides, generate the
- *        points and prepare the grid and the time step.
+ *        points and prepare the grid and the time step. A scene whose
+ *        estimated memory exceeds Sim::memory_limit is refused before
+ *        anything is allocated for its points and grid.
  * @return 0, or non-zero with a message "file:line: ..." in @p err.
  */
 int sim_load_file(Sim *sim, const char *path, int noverrides,
