@@ -40,8 +40,9 @@ static void install_signals(void)
 static void usage(FILE *f)
 {
     fprintf(f,
-        "usage: mpm SCENE [-o OUTDIR] [-q] [--stop-at STEP] [key.path=value ...]\n"
-        "       mpm --restart OUTDIR [-q] [--stop-at STEP]\n"
+        "usage: mpm SCENE [-o OUTDIR] [-q] [--stop-at STEP] [--max-memory MB]\n"
+        "           [key.path=value ...]\n"
+        "       mpm --restart OUTDIR [-q] [--stop-at STEP] [--max-memory MB]\n"
         "\n"
         "Run the material point method (stage %d of the book) on SCENE, a\n"
         "libconfig file in units of mm, g and ms (force N, stress MPa,\n"
@@ -53,6 +54,8 @@ static void usage(FILE *f)
         "  --restart OUTDIR go on from OUTDIR/checkpoint.mpm (written every\n"
         "                   run.checkpoint_every steps, at --stop-at, and when\n"
         "                   the run is interrupted) with the same scene\n"
+        "  --max-memory MB  refuse a scene estimated to need more than MB\n"
+        "                   megabytes (10^6 bytes; default: the memory available)\n"
         "  -h, --help       this text\n"
         "  key.path=value   override a scene setting, e.g. run.update=usf\n"
         "                   run.time=2.5 run.cfl=0.2 run.snapshots=0\n"
@@ -78,6 +81,7 @@ typedef struct Args {
     int restart;         /**< --restart */
     long stop_at;        /**< --stop-at, 0: none */
     int named_out;       /**< -o was given */
+    double max_mb;       /**< --max-memory, 0: the memory available */
 } Args;
 
 /** @return -1 to go on, else the exit status (after help or an error). */
@@ -103,6 +107,14 @@ static int parse_args(int argc, char **argv, Args *a)
             if (errno || *end || end == argv[k] || a->stop_at < 1) {
                 fprintf(stderr, "mpm: --stop-at %s: expected a step number >= 1\n",
                         argv[k]);
+                return 1;
+            }
+        } else if (!strcmp(s, "--max-memory") && k + 1 < argc) {
+            char *end;
+            a->max_mb = strtod(argv[++k], &end);
+            if (end == argv[k] || *end || !(a->max_mb >= 1e-6 && a->max_mb <= 1e12)) {
+                fprintf(stderr, "mpm: --max-memory %s: expected megabytes in "
+                        "[1e-6, 1e12]\n", argv[k]);
                 return 1;
             }
         } else if (s[0] == '-') {
@@ -174,7 +186,7 @@ done:
  *  it; the exit status is that of sim_run(), or 1 for bad input. */
 int main(int argc, char **argv)
 {
-    Args a = {NULL, "output", calloc((size_t)argc + 1, sizeof(char *)), 0, 0, 0, 0, 0};
+    Args a = {NULL, "output", calloc((size_t)argc + 1, sizeof(char *)), 0, 0, 0, 0, 0, 0.0};
     Sim *sim = malloc(sizeof *sim);
     if (!a.over || !sim) {
         fprintf(stderr, "mpm: out of memory\n");
@@ -186,6 +198,7 @@ int main(int argc, char **argv)
     if (rc < 0) {
         install_signals();
         sim_init(sim);
+        sim->memory_limit = (size_t)(a.max_mb * 1e6);
         mpm_install_stages(&sim->hooks);
         rc = load_and_run(sim, &a);
         sim_free(sim);

@@ -4,6 +4,7 @@
  */
 #include "particles.h"
 
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -47,8 +48,12 @@ int particles_reserve(Particles *P, int cap)
 int particles_add(Particles *P, double x, double y, double m, double vol,
                   int mat, int body)
 {
-    if (P->n == P->cap && particles_reserve(P, 2 * P->cap) != 0)
-        return -1;
+    if (P->n == P->cap) {                 /* double, up to INT_MAX points */
+        size_t cap = 2 * (size_t)(P->cap > 0 ? P->cap : 8);
+        if (P->n == INT_MAX ||
+            particles_reserve(P, cap > INT_MAX ? INT_MAX : (int)cap) != 0)
+            return -1;
+    }
     int p = P->n++;
     P->x[p] = x;
     P->y[p] = y;

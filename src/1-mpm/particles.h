@@ -36,7 +36,8 @@ int particles_init(Particles *P, int cap);
 /** @brief Grow the arrays to hold at least @p cap points. @return 0 or -1. */
 int particles_reserve(Particles *P, int cap);
 
-/** @brief Append one point at rest and unstrained. @return its index, or -1. */
+/** @brief Append one point at rest and unstrained. @return its index, or
+ *         -1 out of memory or when the arrays hold INT_MAX points already. */
 int particles_add(Particles *P, double x, double y, double m, double vol,
                   int mat, int body);
 

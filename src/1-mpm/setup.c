@@ -3,6 +3,7 @@
  * @brief From a scene to a ready simulation: material points from shapes,
  *        grid boundary conditions, loaded points, and the time step.
  */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -117,7 +118,12 @@ int setup_points(Sim *sim, char *err, size_t errlen)
         if (check_point_mass(sc, b, err, errlen) || initial_strain(sc, b, e0, err, errlen))
             return -1;
         if (fill_body(sim, b, e0)) {
-            snprintf(err, errlen, "%s: out of memory for the points", sc->file);
+            if (sim->pts.n == INT_MAX)
+                snprintf(err, errlen, "%s:%d: body \"%s\": more than %d points "
+                         "(lower points_per_cell or the cell count)", sc->file,
+                         sc->bodies[b].line, sc->bodies[b].name, INT_MAX);
+            else
+                snprintf(err, errlen, "%s: out of memory for the points", sc->file);
             return -1;
         }
         if (sim->pts.n == before) {
@@ -202,7 +208,7 @@ int setup_grid(Sim *sim, char *err, size_t errlen)
  *  frees it); their number, or -1 out of memory. */
 static int points_in(const Particles *P, const Shape *region, int **points)
 {
-    *points = malloc(sizeof(int) * (size_t)(P->n + 1));
+    *points = malloc(sizeof(int) * ((size_t)P->n + 1));
     if (!*points)
         return -1;
     int count = 0;

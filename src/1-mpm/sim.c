@@ -11,6 +11,7 @@
 
 #include "checkpoint.h"
 #include "scene_include.h"
+#include "footprint.h"
 #include "scene_read.h"
 #include "setup.h"
 
@@ -68,6 +69,10 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
         return -1;
     }
     if (scene_read(sim, cfg, &r))
+        return -1;
+    const config_setting_t *grid = config_lookup(cfg, "grid");
+    if (footprint_check(&sim->scene, sim->memory_limit,
+                        grid ? (int)config_setting_source_line(grid) : 0, err, errlen))
         return -1;
     if (setup_points(sim, err, errlen) || setup_grid(sim, err, errlen) ||
         setup_loads(sim, err, errlen) || setup_held_points(sim, err, errlen) ||

@@ -59,6 +59,8 @@ typedef struct Sim {
     int noverrides;     /**< its command-line overrides */
     char *const *overrides; /**< "key.path=value", the caller's strings */
     uint64_t scene_hash; /**< fingerprint of the settings (checkpoint.h) */
+    size_t memory_limit; /**< bytes a scene may need (footprint.h), set
+                              before loading; 0: the memory available */
 } Sim;
 
 /** How sim_run() runs: what it prints, and when it stops before the end. */
@@ -92,7 +94,9 @@ void *sim_state(const Sim *sim, const char *name);
 
 /**
  * @brief Read a scene file, apply "key.path=value" overrides, generate the
- *        points and prepare the grid and the time step.
+ *        points and prepare the grid and the time step. A scene whose
+ *        estimated memory exceeds Sim::memory_limit is refused before
+ *        anything is allocated for its points and grid.
  * @return 0, or non-zero with a message "file:line: ..." in @p err.
  */
 int sim_load_file(Sim *sim, const char *path, int noverrides,
