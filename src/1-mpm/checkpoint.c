@@ -240,8 +240,11 @@ static FILE *open_checkpoint(const char *dir, char **path, char *err,
     return f;
 }
 
-int checkpoint_scene(const char *dir, CheckpointScene *cs, char *err,
-                     size_t errlen)
+/** Read @p dir's checkpoint: its header into @p cs and, when @p sim is
+ *  not NULL, its state into @p sim and @p rp. @return 0, or -1 with a
+ *  message. */
+static int read_checkpoint(const char *dir, CheckpointScene *cs, Sim *sim,
+                           RunProgress *rp, char *err, size_t errlen)
 {
     memset(cs, 0, sizeof *cs);
     char *path;
@@ -253,6 +256,10 @@ int checkpoint_scene(const char *dir, CheckpointScene *cs, char *err,
     Layout l;
     uint64_t hash;
     int rc = io_header(f, &l, &hash, cs, 0);
+    if (rc == 0 && sim && hash != sim->scene_hash)
+        rc = -5;
+    if (rc == 0 && sim)
+        rc = io_body(f, sim, rp, 0);
     if (rc) {
         explain(rc, path, &l, err, errlen);
         checkpoint_scene_free(cs);
@@ -262,28 +269,17 @@ int checkpoint_scene(const char *dir, CheckpointScene *cs, char *err,
     return rc ? -1 : 0;
 }
 
+int checkpoint_scene(const char *dir, CheckpointScene *cs, char *err,
+                     size_t errlen)
+{
+    return read_checkpoint(dir, cs, NULL, NULL, err, errlen);
+}
+
 int checkpoint_read(Sim *sim, RunProgress *rp, const char *dir, char *err,
                     size_t errlen)
 {
-    char *path;
-    FILE *f = open_checkpoint(dir, &path, err, errlen);
-    if (!f) {
-        free(path);
-        return -1;
-    }
-    Layout l;
-    uint64_t hash;
     CheckpointScene cs;
-    memset(&cs, 0, sizeof cs);
-    int rc = io_header(f, &l, &hash, &cs, 0);
-    if (rc == 0 && hash != sim->scene_hash)
-        rc = -5;
-    if (rc == 0)
-        rc = io_body(f, sim, rp, 0);
-    if (rc)
-        explain(rc, path, &l, err, errlen);
+    int rc = read_checkpoint(dir, &cs, sim, rp, err, errlen);
     checkpoint_scene_free(&cs);
-    fclose(f);
-    free(path);
-    return rc ? -1 : 0;
+    return rc;
 }
