@@ -7,6 +7,8 @@
 #   make docs                the book (Doxygen, warnings are errors)
 #   make figures | figN      the paper's figures, full size (build/figures)
 #   make bench               particle-steps per second and memory per point
+#   make fuzz                the scene reader under libFuzzer (clang), for
+#                            FUZZ_SECONDS (600) in FUZZ_JOBS (2) workers
 #   make same-numbers BASE=rev  every scene, scheme and stage byte for byte
 #                            against the build of another commit
 #   make exercise EX=1-mpm/shape-functions SOLUTION=my_shape.c
@@ -73,7 +75,7 @@ $(foreach s,$(STAGES),$(eval $(call STAGE_RULES,release,$(s))))
 $(foreach s,$(STAGES),$(eval $(call STAGE_RULES,asan,$(s))))
 
 .PHONY: all deps $(addprefix stage,$(STAGES)) check check-release check-asan \
-        check-exercises exercise docs figures bench same-numbers clean
+        check-exercises exercise docs figures bench same-numbers fuzz clean
 .SECONDARY:
 .PHONY: FORCE
 FORCE:
@@ -137,16 +139,53 @@ exercise: deps
 	(the functions to write are in exercises/$(EX)/README.md)"; exit 1; }
 	@bash tools/run_tests.sh "exercise $(EX)::$(call ex_tests,$(EX),student)"
 
+# ---- fuzzing ---------------------------------------------------------------
+# tests/fuzz/fuzz_scene.c loads any text with the last stage's build.  make
+# fuzz compiles it and every source again with clang's libFuzzer; make check
+# replays tests/fuzz/corpus and tests/fuzz/regressions through it with the
+# usual compiler (tests/fuzz/replay.c), in the release and sanitizer builds.
+LAST := $(lastword $(STAGES))
+FUZZ_SECONDS ?= 600
+FUZZ_JOBS ?= 2
+FUZZ_CC := clang
+FUZZ_SAN := -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all
+CFLAGS_fuzz := $(WARN) -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer-no-link $(FUZZ_SAN)
+FUZZ_OBJ := $(patsubst src/%.c,build/fuzz/obj/%.o,$(filter-out %/main.c,$(OBJ_release_$(LAST):build/stage$(LAST)/obj/%.o=src/%.c)))
+REPLAY := build/stage$(LAST)/tests/fuzz/replay build/asan/stage$(LAST)/tests/fuzz/replay
+
+build/fuzz/obj/%.o: src/%.c
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(CFLAGS_fuzz) $(if $(filter %/stages.c,$<),-DMPM_STAGE=$(LAST)) $(INC_release_$(LAST)) -MMD -MP -c $< -o $@
+
+build/fuzz/fuzz_scene.o: tests/fuzz/fuzz_scene.c
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(CFLAGS_fuzz) $(INC_release_$(LAST)) -MMD -MP -c $< -o $@
+
+build/fuzz/fuzz_scene: build/fuzz/fuzz_scene.o $(FUZZ_OBJ)
+	$(FUZZ_CC) -fsanitize=fuzzer $(FUZZ_SAN) $^ $(LIBS) -o $@
+
+-include $(FUZZ_OBJ:.o=.d) build/fuzz/fuzz_scene.d
+
+# the replay links the target's object besides its own
+build/stage$(LAST)/tests/fuzz/replay: build/stage$(LAST)/tests/fuzz/fuzz_scene.o
+build/asan/stage$(LAST)/tests/fuzz/replay: build/asan/stage$(LAST)/tests/fuzz/fuzz_scene.o
+
+fuzz:
+	@sh tools/deps.sh fuzz
+	@$(MAKE) --no-print-directory build/fuzz/fuzz_scene
+	@FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_JOBS=$(FUZZ_JOBS) bash tools/fuzz.sh
+
 # ---- tests -----------------------------------------------------------------
 # Every stage runs the tests of its own and all earlier chapters.
 check: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) check-build
 	@bash tools/run_tests.sh $(foreach s,$(STAGES),"stage$(s):build/stage$(s)/mpm:$(TESTS_release_$(s))" "asan-stage$(s):build/asan/stage$(s)/mpm:$(TESTS_asan_$(s))") \
+	    "fuzz replay::$(REPLAY)" \
 	    "exercises::$(EXERCISE_CHECKS)" \
 	    "empty solutions::$(foreach e,$(EXERCISES),$(addprefix ?,$(call ex_tests,$(e),empty)))"
 
 check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) build/asan/stage$(s)/mpm $(TESTS_asan_$(s))) \
-             $(EXERCISE_BINS)
+             $(REPLAY) $(EXERCISE_BINS)
 
 # ---- book, figures, bench ----------------------------------------------------
 # the chapters show these figures (about twenty-two minutes to draw)

@@ -4,6 +4,8 @@
 #   sh tools/deps.sh figures   the above, gnuplot and valgrind (fig-crossing
 #                              counts instructions)
 #   sh tools/deps.sh docs      doxygen, MathJax, and what the figures need
+#   sh tools/deps.sh fuzz      the above test packages, clang and libFuzzer's
+#                              runtime (make fuzz)
 set -u
 job=${1:-test}
 base="gcc make libc6-dev libconfig-dev libcmocka-dev liblapacke-dev"
@@ -11,8 +13,9 @@ case "$job" in
   test) want="$base" ;;
   figures) want="$base gnuplot-nox valgrind" ;;
   docs) want="doxygen libjs-mathjax gnuplot-nox valgrind $base" ;;
-  all) want="$base gnuplot-nox valgrind doxygen libjs-mathjax" ;;
-  *) echo "usage: sh tools/deps.sh test|figures|docs|all" >&2; exit 2 ;;
+  fuzz) want="$base clang libclang-rt-14-dev" ;;
+  all) want="$base gnuplot-nox valgrind doxygen libjs-mathjax clang libclang-rt-14-dev" ;;
+  *) echo "usage: sh tools/deps.sh test|figures|docs|fuzz|all" >&2; exit 2 ;;
 esac
 
 if ! command -v dpkg-query >/dev/null 2>&1; then

@@ -291,6 +291,53 @@ int setup_held_points(Sim *sim, char *err, size_t errlen)
     return 0;
 }
 
+/** The sums history.csv writes over body @p b's points, into @p t. */
+static void body_totals(const Sim *sim, int b, Totals *t)
+{
+    const Particles *P = &sim->pts;
+    *t = (Totals){0, 0, 0, 0};
+    for (int p = 0; p < P->n; p++) {
+        if (P->body[p] != b)
+            continue;
+        double m = P->m[p];
+        t->kinetic += 0.5 * m * (P->vx[p] * P->vx[p] + P->vy[p] * P->vy[p]);
+        t->strain += P->vol[p] * material_energy_density(P->sxx[p], P->syy[p],
+                         P->sxy[p], P->exx[p], P->eyy[p], P->exy[p]);
+        t->px += m * P->vx[p];
+        t->py += m * P->vy[p];
+    }
+}
+
+int setup_check_totals(const Sim *sim, char *err, size_t errlen)
+{
+    Totals t = sim_totals(sim);
+    if (isfinite(t.kinetic) && isfinite(t.strain) && isfinite(t.px) && isfinite(t.py))
+        return 0;
+    const Scene *sc = &sim->scene;
+    const char *eu = sc->run.units->energy;
+    for (int b = 0; b < sc->nbodies; b++) {
+        body_totals(sim, b, &t);
+        const Body *B = &sc->bodies[b];
+        if (!isfinite(t.kinetic) || !isfinite(t.px) || !isfinite(t.py)) {
+            snprintf(err, errlen, "%s:%d: body \"%s\": its kinetic energy %g %s or "
+                     "momentum (%g, %g) is not finite: rho, thickness and velocity "
+                     "are too large together", sc->file, B->line, B->name,
+                     t.kinetic, eu, t.px, t.py);
+            return -1;
+        }
+        if (!isfinite(t.strain)) {
+            snprintf(err, errlen, "%s:%d: body \"%s\": its strain energy %g %s is "
+                     "not finite: stress, thickness and cell_size are too large "
+                     "together", sc->file, B->line, B->name, t.strain, eu);
+            return -1;
+        }
+    }
+    snprintf(err, errlen, "%s: the points' energy or momentum summed over the "
+             "bodies is not finite (kinetic %g, strain %g %s)", sc->file,
+             t.kinetic, t.strain, eu);
+    return -1;
+}
+
 /// [sim_set_time_step]
 void sim_set_time_step(Sim *sim)
 {

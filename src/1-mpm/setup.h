@@ -25,4 +25,9 @@ int setup_loads(Sim *sim, char *err, size_t errlen);
  *         holds no point, out of memory) in @p err. */
 int setup_held_points(Sim *sim, char *err, size_t errlen);
 
+/** @brief Refuse a scene whose points' energies or momentum, the sums
+ *         history.csv writes, are not finite at t = 0, naming the body.
+ *  @return 0, or -1 with a message in @p err. */
+int setup_check_totals(const Sim *sim, char *err, size_t errlen);
+
 #endif
