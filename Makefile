@@ -155,8 +155,10 @@ docs:
 	@sh tools/deps.sh docs
 	@$(MAKE) --no-print-directory $(DOC_FIGURES)
 	@mkdir -p build/docs
-	doxygen Doxyfile
-	@ln -sfn /usr/share/javascript/mathjax build/docs/html/mathjax
+	@rm -f build/docs/warnings.log
+	@echo doxygen Doxyfile; doxygen Doxyfile; rc=$$?; \
+	 ln -sfn /usr/share/javascript/mathjax build/docs/html/mathjax; \
+	 bash tools/check_html.sh build/docs/html build/docs/warnings.log && exit $$rc
 	@echo "docs: build/docs/html/index.html"
 
 FIGURES := $(notdir $(wildcard figures/fig*))
