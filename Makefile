@@ -151,13 +151,19 @@ check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) bui
 # ---- book, figures, bench ----------------------------------------------------
 # the chapters show these figures (about twenty-two minutes to draw)
 DOC_FIGURES := $(filter fig1 fig1b fig2 fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability,$(notdir $(wildcard figures/fig*)))
+# MathJax is copied into the book (not linked), so that it can be moved or
+# served as it is; its sources (unpacked), tests and combined configurations
+# are left out
+MATHJAX ?= /usr/share/javascript/mathjax
+MATHJAX_PARTS := MathJax.js extensions fonts jax localization
 docs:
 	@sh tools/deps.sh docs
 	@$(MAKE) --no-print-directory $(DOC_FIGURES)
 	@mkdir -p build/docs
 	@rm -f build/docs/warnings.log
 	@echo doxygen Doxyfile; doxygen Doxyfile; rc=$$?; \
-	 ln -sfn /usr/share/javascript/mathjax build/docs/html/mathjax; \
+	 rm -rf build/docs/html/mathjax && mkdir -p build/docs/html/mathjax && \
+	 cp -RL $(addprefix $(MATHJAX)/,$(MATHJAX_PARTS)) build/docs/html/mathjax/ || exit 1; \
 	 bash tools/check_html.sh build/docs/html build/docs/warnings.log && exit $$rc
 	@echo "docs: build/docs/html/index.html"
 
