@@ -163,7 +163,7 @@ docs:
 	@$(MAKE) --no-print-directory $(DOC_FIGURES)
 	@mkdir -p build/docs
 	@rm -f build/docs/warnings.log
-	@echo doxygen Doxyfile; doxygen Doxyfile; rc=$$?; \
+	@echo doxygen Doxyfile; doxygen Doxyfile 2>build/docs/warnings.log; rc=$$?; \
 	 rm -rf build/docs/html/mathjax && mkdir -p build/docs/html/mathjax && \
 	 cp -RL $(addprefix $(MATHJAX)/,$(MATHJAX_PARTS)) build/docs/html/mathjax/ || exit 1; \
 	 bash tools/check_html.sh build/docs/html build/docs/warnings.log && exit $$rc

@@ -11,7 +11,7 @@
 #   - a figure wider than MAX_IMG px (default 640) with neither a width nor
 #     a linked stylesheet that caps images at max-width: 100%;
 #   - a symlink under html/ (the book must work when moved or copied);
-#   - any line in doxygen's warning log (WARN_LOGFILE in Doxyfile).
+#   - any line in doxygen's warnings (its stderr, which make docs keeps).
 # Usage: bash tools/check_html.sh [html dir] [warning log]
 set -u
 HTML=${1:-build/docs/html}
