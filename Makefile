@@ -5,7 +5,9 @@
 #   make stage1 ... stage5   one solver per chapter
 #   make check               every stage's tests, sanitizer builds, exercises
 #   make docs                the book (Doxygen, warnings are errors)
-#   make figures | figN      the paper's figures, full size (build/figures)
+#   make figures | figN      the paper's figures, full size (build/figures/figN.png,
+#                            redrawn when a file it reads changes; REDRAW=1
+#                            redraws anyway, say with other environment settings)
 #   make bench               particle-steps per second and memory per point
 #   make fuzz                the scene reader under libFuzzer (clang), for
 #                            FUZZ_SECONDS (600) in FUZZ_JOBS (2) workers
@@ -190,20 +192,76 @@ check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) bui
 # ---- book, figures, bench ----------------------------------------------------
 # the chapters show these figures (about twenty-two minutes to draw)
 DOC_FIGURES := $(filter fig1 fig1b fig2 fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability,$(notdir $(wildcard figures/fig*)))
+# MathJax is copied into the book (not linked), so that it can be moved or
+# served as it is; its sources (unpacked), tests and combined configurations
+# are left out
+MATHJAX ?= /usr/share/javascript/mathjax
+MATHJAX_PARTS := MathJax.js extensions fonts jax localization
 docs:
 	@sh tools/deps.sh docs
 	@$(MAKE) --no-print-directory $(DOC_FIGURES)
 	@mkdir -p build/docs
-	doxygen Doxyfile
-	@ln -sfn /usr/share/javascript/mathjax build/docs/html/mathjax
+	@rm -f build/docs/warnings.log
+	@echo doxygen Doxyfile; doxygen Doxyfile 2>build/docs/warnings.log; rc=$$?; \
+	 rm -rf build/docs/html/mathjax && mkdir -p build/docs/html/mathjax && \
+	 cp -RL $(addprefix $(MATHJAX)/,$(MATHJAX_PARTS)) build/docs/html/mathjax/ || exit 1; \
+	 bash tools/check_html.sh build/docs/html build/docs/warnings.log && exit $$rc
 	@echo "docs: build/docs/html/index.html"
 
+# Each figure is a file, build/figures/ + the first of FIG_OUT_x, remade
+# only when what it reads has changed: its folder (make.sh, plots, scenes),
+# the programs it runs (FIG_RUN_x) and its other inputs (FIG_USES_x); the
+# other files of FIG_OUT_x come with the first. `make x` is the same.
+# A figure folder not listed here: x.png, remade after any stage. REDRAW=1
+# remakes the figures named whatever their age.
+FIG_OUT_fig1 := fig1.png
+FIG_RUN_fig1 := build/stage2/mpm
+FIG_OUT_fig1b := fig1b.png
+FIG_RUN_fig1b := build/stage1/mpm
+FIG_OUT_fig2 := fig2.png
+FIG_RUN_fig2 := build/stage2/tests/2-fields/scene_fig2
+FIG_USES_fig2 := figures/fig1/dcb_full.cfg figures/fig1/dcb_half.cfg
+FIG_OUT_fig3 := fig3.png fig3-openings.png
+FIG_RUN_fig3 := build/stage4/mpm build/stage4/tests/4-contact/scene_fig3
+FIG_OUT_fig4 := fig4.png fig4-contact.png
+FIG_RUN_fig4 := build/stage4/mpm build/stage4/tests/4-contact/scene_fig4
+FIG_OUT_fig5 := fig5.png
+FIG_RUN_fig5 := build/stage4/mpm
+FIG_USES_fig5 := figures/fig6/beam_impact.cfg
+FIG_OUT_fig6 := fig6.png fig6_scene.png
+FIG_RUN_fig6 := build/stage5/mpm
+FIG_OUT_fig6-onefield := fig6_onefield.png fig6_onefield_scene.png
+FIG_RUN_fig6-onefield := build/stage1/mpm
+FIG_USES_fig6-onefield := figures/fig6/beam_impact.cfg
+FIG_OUT_fig-crossing := fig-crossing.png
+FIG_RUN_fig-crossing := build/stage3/mpm
+FIG_USES_fig-crossing := figures/fig1/dcb_full.cfg tools/task1_cost.sh \
+    $(addprefix tools/bench/,dcb_crack_2x.cfg dcb_crack.cfg dcb_nocrack.cfg)
+FIG_OUT_fig-stability := fig-stability.png
+FIG_RUN_fig-stability := build/stage5/mpm
+FIG_USES_fig-stability := figures/fig6/beam_supports.cfg
+FIG_OUT_fig-tip := fig-tip.png
+FIG_RUN_fig-tip := build/stage3/mpm build/stage3/tests/3-crossing/scene_tip_on_node
+FIG_USES_fig-tip := $(wildcard tests/3-crossing/scenes/tip_*.cfg)
+FIG_OUT_fig-tradeoff := fig-tradeoff-beam.png fig-tradeoff-dcb.png
+FIG_RUN_fig-tradeoff := build/stage5/mpm build/stage5/libmpm.a build/stage5/tests/support/q4.o
+FIG_USES_fig-tradeoff := figures/fig6/beam_supports.cfg figures/fig1/dcb_full.cfg tests/support/q4.h
+
 FIGURES := $(notdir $(wildcard figures/fig*))
+define FIGURE_RULES
+FIG_FILES_$(1) := $$(addprefix build/figures/,$$(or $$(FIG_OUT_$(1)),$(1).png))
+$$(firstword $$(FIG_FILES_$(1))): $$(wildcard figures/$(1)/*) $$(FIG_USES_$(1)) \
+        $$(or $$(FIG_RUN_$(1)),$$(foreach s,$$(STAGES),build/stage$$(s)/mpm)) \
+        $$(if $$(REDRAW),FORCE) | figure-deps
+	@bash figures/$(1)/make.sh || { rm -f $$@; exit 1; }
+$$(wordlist 2,9,$$(FIG_FILES_$(1))): $$(firstword $$(FIG_FILES_$(1))) ;
+$(1): $$(FIG_FILES_$(1))
+endef
+$(foreach f,$(FIGURES),$(eval $(call FIGURE_RULES,$(f))))
+.PHONY: $(FIGURES) figure-deps
 figures: $(FIGURES)
-$(FIGURES): %: deps
+figure-deps: deps
 	@sh tools/deps.sh figures
-	@$(MAKE) --no-print-directory $(foreach s,$(STAGES),build/stage$(s)/mpm)
-	@bash figures/$@/make.sh
 
 bench: deps
 	@$(MAKE) --no-print-directory $(foreach s,$(STAGES),build/stage$(s)/mpm)

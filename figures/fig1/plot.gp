@@ -2,8 +2,7 @@
 # tension, with the crack drawn in black.  Variables: points, crack, out,
 # title (set with gnuplot -e).
 set datafile separator ","
-set termoption noenhanced
-set terminal pngcairo size 1200,560 font ",12"
+set terminal pngcairo size 1200,560 font ",12" noenhanced
 set output out
 set title title
 set size ratio -1

@@ -6,5 +6,8 @@ set -euo pipefail
 mkdir -p build/figures
 make --no-print-directory build/stage2/tests/2-fields/scene_fig2
 FIG2_CSV=build/figures/fig2.csv build/stage2/tests/2-fields/scene_fig2 | grep -v '^\['
-gnuplot -e "data='build/figures/fig2.csv'; out='build/figures/fig2.png'" figures/fig2/plot.gp
+# the crack tip: the last point of the scene's crack
+tip=$(sed -n 's/^cracks = .*\[\([-0-9.eE+]*\), *[-0-9.eE+]*\] *); *} *);.*/\1/p' figures/fig1/dcb_full.cfg)
+[ -n "$tip" ] || { echo "fig2: no crack tip in figures/fig1/dcb_full.cfg" >&2; exit 1; }
+gnuplot -e "data='build/figures/fig2.csv'; out='build/figures/fig2.png'; tip=$tip" figures/fig2/plot.gp
 echo "fig2: build/figures/fig2.png"

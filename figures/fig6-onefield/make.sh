@@ -5,8 +5,9 @@
 #
 # Writes build/figures/fig6_onefield.png (energy curves), build/figures/fig6_onefield_scene.png
 # (the layout of Fig. 5), build/figures/fig6_onefield_summary.txt, and the runs under
-# build/figures/fig6-onefield/<scheme>/.  A scheme that goes unstable (exit status 3)
-# is drawn up to where it stopped; the figure is still made.
+# build/figures/fig6-onefield/<scheme>/; the summary also times the impactor's
+# turn, and that of a MUSL run with it at 87 g (musl-87g/).  A scheme that goes
+# unstable (exit status 3) is drawn up to where it stopped; the figure is still made.
 #
 # Environment: MPM (default build/stage1/mpm), SCHEMES (default
 # "usl musl usf"), TIME (simulated ms, default the scene's 6).
@@ -84,6 +85,46 @@ done
                 printf "%-5s%s\n", s, (out == "" ? "  none" : out)
             }' "$RUNS/$s/history.csv"
     done
+} >>"$summary"
+# turn DIR: first shared node (the first step with strain energy), the
+# impactor's turning point (its least kinetic energy / K0) and the peak it
+# climbs back to before the shared nodes hold it again
+turn() {
+    awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
+             NR == 2 { k0 = $c["kinetic_impactor"]; e0 = $c["total"]; kmin = 2 }
+             { t = $c["time"]; k = $c["kinetic_impactor"] / k0
+               if (k > 10) exit                          # blown up
+               if (t0 == "" && $c["strain"] > 1e-12 * e0) t0 = t
+               if (k < kmin) { kmin = k; tmin = t; kp = 0 } else if (k > kp) { kp = k; tp = t } }
+             END { if (t0 == "") print "none"; else printf "%s %s %s %s %s\n", t0, tmin, kmin, tp, kp }' \
+        "$1/history.csv"
+}
+# the same MUSL run with the impactor at 87 g (the other reading of the
+# scan's "?87 g"): thickness 51.10 mm
+m87=$RUNS/musl-87g
+rm -rf "$m87"
+echo "fig6-onefield: musl, 87 g ..."
+"$MPM" "$SCENE" -q -o "$m87" run.update=musl "bodies.[1].thickness=51.10" "${over[@]}" \
+    >"$m87.log" 2>&1 || { cat "$m87.log" >&2; echo "fig6-onefield: musl 87 g failed" >&2; exit 1; }
+{
+    echo "Impactor: first shared node, its turning point (least kinetic energy K/K0)"
+    echo "and the peak it climbs back to:"
+    for s in $SCHEMES musl-87g; do
+        read -r t0 tmin kmin tp kp < <(turn "$RUNS/$s")
+        if [ "$t0" = none ]; then
+            printf '%-8s no shared node before it stopped\n' "$s"
+        else
+            printf '%-8s first shared node %.3f ms, turns at %.3f ms (K/K0 %.4f), back to %.4f at %.3f ms\n' \
+                "$s" "$t0" "$tmin" "$kmin" "$kp" "$tp"
+        fi
+    done
+    if [ -s "$RUNS/musl/history.csv" ]; then
+        read -r a0 a1 _ < <(turn "$RUNS/musl")
+        read -r b0 b1 _ < <(turn "$m87")
+        awk -v a0="$a0" -v a1="$a1" -v b0="$b0" -v b1="$b1" 'BEGIN {
+            printf "musl: first shared node to turning point %.3f ms at 187 g, %.3f ms at 87 g (%+.1f %%)\n",
+                   a1 - a0, b1 - b0, 100 * ((b1 - b0) / (a1 - a0) - 1) }'
+    fi
 } >>"$summary"
 cat "$summary"
 

@@ -18,9 +18,11 @@
  * finest cell.  With P = 1 mN (opening 1.6 mm, still physically linear:
  * strains < 1 %, rotations 3 %) the points cross several cell lines while
  * loading, and the cell-crossing error of linear shape functions adds
- * compliance that grows as the grid is refined: openings 1.5309, 1.5570,
- * 1.6071 mm on the three grids below, against 1.5302, 1.5479, 1.5567 mm for
- * 0.1 mN and 1.5303, 1.5480, 1.5565 mm for 0.01 mN (openings scaled to 1 mN).
+ * compliance that grows as the grid is refined: openings 1.5311, 1.5605,
+ * 1.6658 mm on the three grids below, the last not at rest (kinetic energy
+ * 2.7 times the strain energy at 400 ms), against 1.5302, 1.5479, 1.5567 mm
+ * for 0.1 mN and 1.5303, 1.5480, 1.5565 mm for 0.01 mN (openings scaled to
+ * 1 mN; DCB_LOAD_MN below prints them).
  *
  * Measured: delta, the mean y displacement of the loaded points (the
  * displacement work-conjugate to P, i.e. the arm's load-line deflection;
@@ -85,6 +87,10 @@
  * the strain energy equals half
  * the work of the load, U = P delta / 2 (Clapeyron; exact for a linear
  * static discrete system), within 0.1 %.
+ *
+ * DCB_LOAD_MN=1 (mN) runs the three grids at that load instead and prints
+ * the same lines against the reference at that load, asserting nothing
+ * (the cell-crossing study above; chapter 1 quotes it).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -92,7 +98,8 @@
 
 #include "testkit.h"
 
-static const double P = 1.0e-4;     /* N, total end load (0.1 mN) */
+static double P = 1.0e-4;           /* N, total end load (0.1 mN) */
+static int study;                   /* DCB_LOAD_MN set: print, do not judge */
 static const double E = 0.1, NU = 0.33, H = 18.0, A_LOAD = 49.0;
 
 /** Williams' effective crack-length factor for an isotropic arm. */
@@ -186,8 +193,8 @@ static void opening_converges_to_beam_theory(void **state)
     (void)state;
     static const double hs[3] = {2.0, 1.0, 0.5};
     double ref = reference_opening(), d[3], err[3];
-    printf("  half DCB: reference (a + chi h)^3, chi = %.4f: %.5f mm\n",
-           williams_chi(), ref);
+    printf("  half DCB, P = %g mN: reference (a + chi h)^3, chi = %.4f: %.5f mm\n",
+           P * 1e3, williams_chi(), ref);
     for (int g = 0; g < 3; g++) {
         Result r = run_half_dcb(hs[g]);
         d[g] = r.delta;
@@ -197,12 +204,16 @@ static void opening_converges_to_beam_theory(void **state)
                hs[g], r.delta, 100 * err[g], r.drift / r.delta,
                r.kinetic / r.strain, r.grid_kinetic / r.strain,
                2 * r.strain / (P * r.delta), r.seconds);
+        if (study)
+            continue;
         /* static state: no motion left, U = P delta / 2 */
         assert_true(fabs(r.drift) < 1e-4 * r.delta);
         assert_true(r.kinetic < 1e-5 * r.strain);
         assert_close(2 * r.strain / (P * r.delta), 1.0, 1e-3);
         assert_close(r.delta, ref, 0.03 * ref);
     }
+    if (study)
+        return;
     assert_true(fabs(err[1]) < fabs(err[0]));
     assert_true(fabs(err[2]) < fabs(err[1]));
     /* successive differences shrink; Richardson with the observed order */
@@ -217,6 +228,17 @@ static void opening_converges_to_beam_theory(void **state)
 
 int main(void)
 {
+    const char *load = getenv("DCB_LOAD_MN");
+    if (load) {
+        char *end;
+        double mn = strtod(load, &end);
+        if (end == load || *end || !(mn > 0)) {
+            fprintf(stderr, "DCB_LOAD_MN=%s: give a load in mN above zero\n", load);
+            return 2;
+        }
+        P = mn * 1e-3;
+        study = 1;
+    }
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(opening_converges_to_beam_theory),
     };

@@ -15,18 +15,53 @@
  * the largest value that quantity takes during the run (round-off scales
  * with the values that produced it; velocities decay by damping, so a bound
  * relative to their final, tiny values would measure the damping instead).
+ *
+ * PATCH_SHIFT_Y=18 (mm) moves both scenes up by that much (the full
+ * specimen at 0 < y < 36) and prints the same lines without judging them:
+ * the mirror image is then lost to rounding (chapter 2 quotes the ratios).
  */
 #include "testkit.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 
 enum { NQ = 10 };
+
+static double shift;      /* PATCH_SHIFT_Y (mm); 0: the test */
+
+/** Overrides that move the DCB scenes up by @p shift (the files' y values
+ *  plus shift), into @p buf; a NULL-ended list in @p ov. */
+static void shifted(int full, char buf[][128], const char *ov[])
+{
+    const double dx = 1.9607843137254901, d = shift;
+    int n = 0;
+    snprintf(buf[n++], 128, "grid.origin=[%#.17g, %#.17g]", -dx, -20.0 + d);
+    snprintf(buf[n++], 128, "bodies.[0].rectangle.min=[0.0, %#.17g]", (full ? -18.0 : 0.0) + d);
+    snprintf(buf[n++], 128, "bodies.[0].rectangle.max=[100.0, %#.17g]", 18.0 + d);
+    snprintf(buf[n++], 128, "loads.[0].rectangle.min=[0.0, %#.17g]", d);
+    snprintf(buf[n++], 128, "loads.[0].rectangle.max=[1.0, %#.17g]", 18.0 + d);
+    if (full) {
+        snprintf(buf[n++], 128, "loads.[1].rectangle.min=[0.0, %#.17g]", -18.0 + d);
+        snprintf(buf[n++], 128, "loads.[1].rectangle.max=[1.0, %#.17g]", d);
+        snprintf(buf[n++], 128, "cracks.[0].points=([%#.17g, %#.17g], [50.0, %#.17g])", -dx, d, d);
+    } else {
+        snprintf(buf[n++], 128, "boundaries.[0].rectangle.min=[50.0, %#.17g]", d);
+        snprintf(buf[n++], 128, "boundaries.[0].rectangle.max=[110.0, %#.17g]", d);
+    }
+    for (int k = 0; k < n; k++)
+        ov[k] = buf[k];
+    ov[n] = NULL;
+}
 
 static void full_run_equals_half_run(void **state)
 {
     (void)state;
-    Sim *full = tk_load_file("figures/fig1/dcb_full.cfg", NULL);
-    Sim *half = tk_load_file("figures/fig1/dcb_half.cfg", NULL);
+    char bf[10][128], bh[10][128];
+    const char *of[11], *oh[11];
+    shifted(1, bf, of);
+    shifted(0, bh, oh);
+    Sim *full = tk_load_file("figures/fig1/dcb_full.cfg", shift != 0 ? of : NULL);
+    Sim *half = tk_load_file("figures/fig1/dcb_half.cfg", shift != 0 ? oh : NULL);
     int n = half->pts.n, off = full->pts.n - n;
     assert_int_equal(full->pts.n, 2 * n);
     assert_true(full->dt == half->dt && full->nsteps == half->nsteps);
@@ -57,7 +92,8 @@ static void full_run_equals_half_run(void **state)
     for (int q = 0; q < NQ; q++) {
         printf("%-9s max |full - half| = %.3g, largest value %.3g, ratio %.3g\n",
                name[q], diff[q], scale[q], diff[q] / scale[q]);
-        assert_true(diff[q] <= 1e-12 * scale[q]);
+        if (shift == 0)
+            assert_true(diff[q] <= 1e-12 * scale[q]);
     }
     tk_free(full);
     tk_free(half);
@@ -65,6 +101,15 @@ static void full_run_equals_half_run(void **state)
 
 int main(void)
 {
+    const char *sh = getenv("PATCH_SHIFT_Y");
+    if (sh) {
+        char *end;
+        shift = strtod(sh, &end);
+        if (end == sh || *end) {
+            fprintf(stderr, "PATCH_SHIFT_Y=%s: give a shift in mm\n", sh);
+            return 2;
+        }
+    }
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(full_run_equals_half_run),
     };

@@ -62,7 +62,7 @@ int tk_shell(const char *command, char *out, size_t outlen);
 void tk_assert_same_outputs(const char *a, const char *b, const char *skip);
 
 /** @brief Fail unless every output file in @p dir is whole: no ".part"
- *         file, ParaView files end with </VTKFile>, CSV rows are whole.
+ *         file, ParaView files end with \</VTKFile\>, CSV rows are whole.
  *  @return the number of files. */
 int tk_assert_outputs_whole(const char *dir);
 
