@@ -163,6 +163,10 @@ int crack_check_points(struct SceneReader *r, const config_setting_t *s,
 /** @brief Set the extent (Crack::xmin ...) of the crack's points. */
 void crack_extent(Crack *c);
 
+/** The keys of a crack of stage 2 (NULL-ended); later stages add keys to
+ *  section "cracks". */
+extern const char *const crack_keys[];
+
 /** @brief Parse the "cracks" section and subscribe stage 2's hooks. */
 int cracks_read(Sim *sim, const config_setting_t *s, int index,
                 struct SceneReader *r);
