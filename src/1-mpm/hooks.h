@@ -50,9 +50,10 @@ typedef int (*StepHook)(struct Sim *sim, void *state, Seam seam);
 /** A set-up subscriber: write a message and return non-zero to refuse. */
 typedef int (*PrepareHook)(struct Sim *sim, void *state, char *err,
                            size_t errlen);
-/** A snapshot subscriber: write files for snapshot @p index; 0 or -1. */
+/** A snapshot subscriber: write files for snapshot @p index (@p times:
+ *  the times of snapshots 0 .. index, for a series file); 0 or -1. */
 typedef int (*SnapshotHook)(const struct Sim *sim, void *state,
-                            const char *dir, int index);
+                            const char *dir, int index, const double *times);
 /** A history subscriber: write ",name..." (header) or ",value..."; 0 or -1. */
 typedef int (*HistoryHook)(const struct Sim *sim, void *state, FILE *f,
                            int header);

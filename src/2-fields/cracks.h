@@ -188,8 +188,11 @@ int cracks_task7(Sim *sim, void *state, Seam seam);
 /** @brief Nodes that carry more than one velocity field this step. */
 int cracks_multi_field_nodes(const Sim *sim);
 
-/** @brief Write cracks_NNNNN.vtp and cracks_NNNNN.csv with the snapshot. */
-int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index);
+/** @brief Write cracks_NNNNN.vtp and cracks_NNNNN.csv with the snapshot,
+ *         and rewrite the series cracks.pvd to list snapshots 0 .. @p index
+ *         at their @p times. */
+int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index,
+                    const double *times);
 
 /** @brief history.csv column: number of multi-field nodes. */
 int cracks_history(const Sim *sim, void *state, FILE *f, int header);
