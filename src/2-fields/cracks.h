@@ -85,6 +85,7 @@ static inline Cracks *cracks_of(const Sim *sim)
     return (Cracks *)sim_state(sim, "cracks");
 }
 
+/// [crossing_tests]
 /**
  * @brief The crossing test of one segment: does the line from the
  *        particle (px, py) to the node (nx, ny) cross segment @p k of
@@ -101,6 +102,7 @@ int crack_segment_side(const Crack *c, int k, double px, double py, double nx,
  *        order the segments are tested in.
  */
 int crack_crossing(const Crack *c, double px, double py, double nx, double ny);
+/// [crossing_tests]
 
 /** @brief Test segment @p k of crack @p crack and record a crossing in
  *         @p x. @return 0, or -1 when @p x is full. */
@@ -178,8 +180,16 @@ int cracks_read_search(Sim *sim, const config_setting_t *s, int index,
 /** @brief Task 1: key every pair that crosses a crack with its side. */
 int cracks_key_fields(Sim *sim, void *state, Seam seam);
 
-/** @brief Task 7: move the crack points with the centre-of-mass velocity. */
+/// [cracks_move]
+/**
+ * @brief Task 7: move every crack point with the centre-of-mass velocity
+ *        of the nodes of its cell (all fields of a node together, eq. 7
+ *        and 32), interpolated with the shape functions (eq. 6), and
+ *        update each crack's extent.
+ * @return 0, or the value of step_fail() for a point that leaves the grid.
+ */
 int cracks_move(Sim *sim);
+/// [cracks_move]
 
 /** @brief Task 7 as a subscriber: move the cracks, then bring the
  *         crossing search up to date. */
