@@ -18,7 +18,9 @@ set size ratio -1
 set xlabel "x (mm)"
 set ylabel "y (mm)"
 set key off
-set multiplot layout 1,2 margins 0.05, 0.88, 0.16, 0.82 spacing 0.03 title "Crack patch test: the full DCB's upper half equals the half DCB by symmetry\n".label
+top = "Crack patch test: the full DCB's upper half equals the half DCB by symmetry"
+set multiplot layout 1,2 margins 0.05, 0.88, 0.16, 0.82 spacing 0.03 \
+    title top."\n".label
 set title "full DCB with an explicit crack (CRAMP, stage 2): y > 0"
 unset colorbox                          # one colour scale: the right one
 plot full using 1:($2 > 0 ? $2 : 1/0):5 skip 2 with points pt 5 ps 0.7 palette, \
