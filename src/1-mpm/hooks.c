@@ -19,6 +19,7 @@ int hooks_add_scheme(Hooks *h, const char *name, double before, double after,
 {
     if (h->nschemes == HOOKS_MAX)
         return h->overflow = -1;
+    h->scheme_rank[h->nschemes] = h->rank;
     h->schemes[h->nschemes++] =
         (UpdateScheme){name, before, after, reextrapolate};
     return 0;
@@ -26,11 +27,12 @@ int hooks_add_scheme(Hooks *h, const char *name, double before, double after,
 
 int hooks_add_key(Hooks *h, const char *section, const char *key,
                   int (*parse)(struct Sim *, const config_setting_t *, int,
-                               struct SceneReader *))
+                               struct SceneReader *),
+                  const char *const *keys)
 {
     if (h->nkeys == HOOKS_MAX)
         return h->overflow = -1;
-    h->keys[h->nkeys++] = (SceneKey){section, key, parse, h->rank};
+    h->keys[h->nkeys++] = (SceneKey){section, key, parse, keys, h->rank};
     return 0;
 }
 
@@ -71,7 +73,7 @@ int hooks_add_choice(Hooks *h, const char *key, const char *name,
 {
     if (h->nchoices == HOOKS_MAX)
         return h->overflow = -1;
-    h->choices[h->nchoices++] = (Choice){key, name, impl};
+    h->choices[h->nchoices++] = (Choice){key, name, impl, h->rank};
     return 0;
 }
 

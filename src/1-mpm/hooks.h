@@ -50,9 +50,10 @@ typedef int (*StepHook)(struct Sim *sim, void *state, Seam seam);
 /** A set-up subscriber: write a message and return non-zero to refuse. */
 typedef int (*PrepareHook)(struct Sim *sim, void *state, char *err,
                            size_t errlen);
-/** A snapshot subscriber: write files for snapshot @p index; 0 or -1. */
+/** A snapshot subscriber: write files for snapshot @p index (@p times:
+ *  the times of snapshots 0 .. index, for a series file); 0 or -1. */
 typedef int (*SnapshotHook)(const struct Sim *sim, void *state,
-                            const char *dir, int index);
+                            const char *dir, int index, const double *times);
 /** A history subscriber: write ",name..." (header) or ",value..."; 0 or -1. */
 typedef int (*HistoryHook)(const struct Sim *sim, void *state, FILE *f,
                            int header);
@@ -92,6 +93,9 @@ typedef struct SceneKey {
      *  return non-zero with a message in the reader. */
     int (*parse)(struct Sim *sim, const config_setting_t *s, int index,
                  struct SceneReader *r);
+    /** The keys inside it when it is a group or a list of groups
+     *  (NULL-ended; its parser checks against the same list), else NULL. */
+    const char *const *keys;
     int rank;             /**< stage order */
 } SceneKey;
 
@@ -108,6 +112,7 @@ typedef struct Choice {
     const char *key;    /**< the scene key that chooses */
     const char *name;   /**< the value that names this row */
     const void *impl;   /**< the row: a Method, a MaterialLaw, ... */
+    int rank;           /**< stage order of the stage that added it */
 } Choice;
 
 /** A row of the method table: how the run loop advances one step. */
@@ -128,6 +133,7 @@ typedef struct FieldKey {
  *  scene). */
 typedef struct Hooks {
     UpdateScheme schemes[HOOKS_MAX]; /**< stress-update schemes */
+    int scheme_rank[HOOKS_MAX];      /**< the stage order of each */
     int nschemes;                    /**< how many */
     SceneKey keys[HOOKS_MAX];        /**< sections and nested keys */
     int nkeys;                       /**< how many */
@@ -152,10 +158,13 @@ int hooks_add_scheme(Hooks *h, const char *name, double before, double after,
                      int reextrapolate);
 
 /** @brief Register a top-level scene section (@p section = "") or a key
- *         nested in @p section. @return 0, or -1 when full. */
+ *         nested in @p section, read by @p parse; @p keys (NULL-ended, or
+ *         NULL) are the keys of the group it holds, for `mpm --keys`.
+ *  @return 0, or -1 when full. */
 int hooks_add_key(Hooks *h, const char *section, const char *key,
                   int (*parse)(struct Sim *, const config_setting_t *, int,
-                               struct SceneReader *));
+                               struct SceneReader *),
+                  const char *const *keys);
 
 /** @brief The registered key @p key of @p section, or NULL. */
 const SceneKey *hooks_find_key(const Hooks *h, const char *section,

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "checkpoint.h"
+#include "scene_keys.h"
 #include "sim.h"
 #include "stages.h"
 
@@ -37,8 +38,15 @@ static void install_signals(void)
     signal(SIGXFSZ, SIG_IGN);
 }
 
+/** The help text; the scene sections and the crack files are this
+ *  build's, read from the registries its stages fill. */
 static void usage(FILE *f)
 {
+    Hooks h;
+    char sections[256];
+    memset(&h, 0, sizeof h);
+    mpm_install_stages(&h);
+    scene_sections_list(&h, sections, sizeof sections);
     fprintf(f,
         "usage: mpm SCENE [-o OUTDIR] [-q] [--stop-at STEP] [--max-memory MB]\n"
         "           [key.path=value ...]\n"
@@ -56,19 +64,27 @@ static void usage(FILE *f)
         "                   the run is interrupted) with the same scene\n"
         "  --max-memory MB  refuse a scene estimated to need more than MB\n"
         "                   megabytes (10^6 bytes; default: the memory available)\n"
+        "  --keys           print every scene key this build accepts, with the\n"
+        "                   stage that adds it\n"
         "  -h, --help       this text\n"
         "  key.path=value   override a scene setting, e.g. run.update=usf\n"
         "                   run.time=2.5 run.cfl=0.2 run.snapshots=0\n"
         "\n"
+        "Scene sections of this build:\n  %s.\n"
+        "Every key with its type, unit, default and range: the book's page\n"
+        "\"Scene reference\" (chapters/scene-reference.md).\n"
+        "\n"
         "OUTDIR receives history.csv (energies, momentum), particles_NNNNN.vtu\n"
         "with particles.pvd (open in ParaView), grid_NNNNN.csv (stresses\n"
-        "extrapolated to the nodes) and particles_final.csv; each file is\n"
+        "extrapolated to the nodes) and particles_final.csv%s; each file is\n"
         "written whole under a temporary name, then renamed.\n"
         "SIGINT or SIGTERM stop the run after its current step with the points\n"
         "and a checkpoint written.\n"
         "Exit status: 0 done (or stopped at --stop-at), 1 bad input, 2 output\n"
         "error, 3 unstable run, 130 interrupted (SIGINT), 143 (SIGTERM).\n",
-        mpm_stage());
+        mpm_stage(), sections, hooks_find_key(&h, "", "cracks") ?
+        ";\na scene with cracks adds cracks_NNNNN.vtp with cracks.pvd (the crack\n"
+        "lines in ParaView) and cracks_NNNNN.csv (their points)" : "");
 }
 
 /** What the command line asks. */
@@ -92,6 +108,11 @@ static int parse_args(int argc, char **argv, Args *a)
         if (!strcmp(s, "-h") || !strcmp(s, "--help")) {
             usage(stdout);
             return 0;
+        } else if (!strcmp(s, "--keys")) {
+            Hooks h;
+            memset(&h, 0, sizeof h);
+            mpm_install_stages(&h);
+            return scene_keys_print(&h, mpm_stage(), stdout) ? 2 : 0;
         } else if (!strcmp(s, "-o") && k + 1 < argc) {
             a->outdir = argv[++k];
             a->named_out = 1;

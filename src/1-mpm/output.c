@@ -218,6 +218,22 @@ int output_points_csv(const Sim *sim, const char *dir, const char *name)
     return outfile_commit(&o);
 }
 
+int output_series(const Sim *sim, const char *dir, const char *name,
+                  const char *stem, const char *ext, int index,
+                  const double *times)
+{
+    OutFile o;
+    if (outfile_open(&o, dir, "%s", name))
+        return -1;
+    fprintf(o.f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+                 "<Collection>\n");
+    for (int k = 0; k <= index; k++)
+        fprintf(o.f, "<DataSet timestep=\"%.*g\" file=\"%s_%05d.%s\"/>\n",
+                output_digits(sim, 10), times[k], stem, k, ext);
+    fprintf(o.f, "</Collection>\n</VTKFile>\n");
+    return outfile_commit(&o);
+}
+
 int output_snapshot(Sim *sim, const char *dir, int index, const double *times)
 {
     char name[32];
@@ -226,17 +242,9 @@ int output_snapshot(Sim *sim, const char *dir, int index, const double *times)
         return -1;
     const SeamList *l = &sim->hooks.seam[SEAM_SNAPSHOT];
     for (int k = 0; k < l->n; k++)
-        if (l->at[k].fn.snapshot(sim, l->at[k].state, dir, index))
+        if (l->at[k].fn.snapshot(sim, l->at[k].state, dir, index, times))
             return -1;
     /* rewrite the series so that it is complete after every snapshot */
-    OutFile o;
-    if (outfile_open(&o, dir, "particles.pvd"))
-        return -1;
-    fprintf(o.f, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
-                 "<Collection>\n");
-    for (int k = 0; k <= index; k++)
-        fprintf(o.f, "<DataSet timestep=\"%.*g\" file=\"particles_%05d.vtu\"/>\n",
-                output_digits(sim, 10), times[k], k);
-    fprintf(o.f, "</Collection>\n</VTKFile>\n");
-    return outfile_commit(&o);
+    return output_series(sim, dir, "particles.pvd", "particles", "vtu", index,
+                         times);
 }

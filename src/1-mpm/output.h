@@ -45,6 +45,18 @@ void output_history_row(Sim *sim, FILE *f);
  */
 int output_snapshot(Sim *sim, const char *dir, int index, const double *times);
 
+/**
+ * @brief Write the ParaView series @p dir/@p name (a .pvd file) that lists
+ *        the files STEM_00000.EXT .. STEM_NNNNN.EXT (NNNNN = @p index) of
+ *        snapshots 0 .. index at their @p times; ParaView opens it as one
+ *        data set in time. A writer of snapshot files rewrites it with
+ *        each snapshot, so that it is complete after every one.
+ * @return 0, or -1 after a message naming the file.
+ */
+int output_series(const Sim *sim, const char *dir, const char *name,
+                  const char *stem, const char *ext, int index,
+                  const double *times);
+
 /** @brief Write all points as CSV to @p dir/@p name. @return 0, or -1
  *         after a message naming the file. */
 int output_points_csv(const Sim *sim, const char *dir, const char *name);

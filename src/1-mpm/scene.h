@@ -96,6 +96,7 @@ typedef struct HeldPoints {
                             (scene_lines_at() names its file) */
 } HeldPoints;
 
+/// [update_scheme]
 /** A stress-update scheme: where in the step the stress is updated. */
 typedef struct UpdateScheme {
     const char *name;   /**< name in the scene file (run.update) */
@@ -103,6 +104,7 @@ typedef struct UpdateScheme {
     double after;       /**< fraction of dt applied in Task 6 */
     int reextrapolate;  /**< Task 6c: re-extrapolate new velocities first */
 } UpdateScheme;
+/// [update_scheme]
 
 /** Settings of the time integration and output. */
 typedef struct RunSettings {

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "scene_keys.h"
 #include "scene_text.h"
 
 /** The override that set @p s or a setting holding it (its text, kept as
@@ -248,10 +249,9 @@ static const config_setting_t *group_of(SceneReader *r,
 
 static int read_rectangle(SceneReader *r, const config_setting_t *g, Shape *sh)
 {
-    static const char *const keys[] = {"min", "max", NULL};
     double lo[2], hi[2];
-    if (scene_check_keys(r, g, keys) || scene_pair(r, g, "min", 1, lo) < 0 ||
-        scene_pair(r, g, "max", 1, hi) < 0)
+    if (scene_check_keys(r, g, scene_rectangle_keys) ||
+        scene_pair(r, g, "min", 1, lo) < 0 || scene_pair(r, g, "max", 1, hi) < 0)
         return -1;
     if (!(hi[0] >= lo[0] && hi[1] >= lo[1]))   /* a line of nodes is fine */
         return scene_error(r, g, "rectangle",
@@ -267,9 +267,9 @@ static int read_rectangle(SceneReader *r, const config_setting_t *g, Shape *sh)
 
 static int read_disk(SceneReader *r, const config_setting_t *g, Shape *sh)
 {
-    static const char *const keys[] = {"center", "radius", "inner_radius", NULL};
     double c[2];
-    if (scene_check_keys(r, g, keys) || scene_pair(r, g, "center", 1, c) < 0 ||
+    if (scene_check_keys(r, g, scene_disk_keys) ||
+        scene_pair(r, g, "center", 1, c) < 0 ||
         scene_number(r, g, "radius", 1, 0, &sh->r) < 0 ||
         scene_number(r, g, "inner_radius", 0, 0, &sh->rin) < 0)
         return -1;
@@ -376,12 +376,12 @@ int scene_choice(SceneReader *r, const Hooks *h, const config_setting_t *group,
 
 static int read_grid(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
-    static const char *const keys[] = {"origin", "cells", "cell_size", NULL};
     int st;
     const config_setting_t *g = group_of(r, root, "grid", 1, &st);
     Scene *sc = &sim->scene;
     double o[2] = {0, 0}, n[2], h[2];
-    if (!g || scene_check_keys(r, g, keys) || scene_pair(r, g, "origin", 0, o) < 0 ||
+    if (!g || scene_check_keys(r, g, scene_grid_keys) ||
+        scene_pair(r, g, "origin", 0, o) < 0 ||
         scene_pair(r, g, "cells", 1, n) < 0 || scene_pair(r, g, "cell_size", 1, h) < 0)
         return -1;
     const config_setting_t *cs = config_setting_get_member(g, "cells");
@@ -403,17 +403,14 @@ static int read_grid(Sim *sim, SceneReader *r, const config_setting_t *root)
 
 static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
-    static const char *const keys[] = {"time", "cfl", "allow_cfl_above_one",
-        "update", "method", "damping", "plane", "gravity", "snapshots",
-        "history_every", "stress_rate", "precision", "units",
-        "checkpoint_every", NULL};
     int st;
     const config_setting_t *g = group_of(r, root, "run", 1, &st);
     RunSettings *run = &sim->scene.run;
     double gr[2] = {0, 0}, snaps, hist, ckpt;
     const char *update = "musl", *plane = "stress", *method = "mpm";
     const char *rate = "unrotated", *precision = "usual", *units = "mm-g-ms";
-    if (!g || scene_check_open_keys(r, &sim->hooks, "run", g, keys, NULL) ||
+    if (!g ||
+        scene_check_open_keys(r, &sim->hooks, "run", g, scene_run_keys, NULL) ||
         scene_number(r, g, "time", 1, 0, &run->time) < 0 ||
         scene_number(r, g, "cfl", 0, 0.5, &run->cfl) < 0 ||
         scene_number(r, g, "damping", 0, 0.0, &run->damping) < 0 ||
@@ -509,7 +506,6 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
 /// [read_materials]
 static int read_materials(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
-    static const char *const keys[] = {"name", "law", "rho", NULL};
     const config_setting_t *l = config_setting_get_member(root, "materials");
     Scene *sc = &sim->scene;
     if (!l)
@@ -529,7 +525,8 @@ static int read_materials(Sim *sim, SceneReader *r, const config_setting_t *root
         if (scene_string(r, g, "law", 0, &law) < 0 ||
             scene_choice(r, &sim->hooks, g, "materials", "law", law,
                          (const void **)&m->law) ||
-            scene_check_open_keys(r, &sim->hooks, "materials", g, keys,
+            scene_check_open_keys(r, &sim->hooks, "materials", g,
+                                  scene_material_keys,
                                   m->law->keys) ||
             scene_string(r, g, "name", 1, &name) < 0 ||
             scene_number(r, g, "rho", 1, 0, &m->rho) < 0 || m->law->read(r, g, m))
@@ -558,9 +555,6 @@ static int inside_grid(const Scene *sc, const Shape *s)
 
 static int read_bodies(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
-    static const char *const keys[] = {"name", "material", "thickness", "velocity",
-        "angular_velocity", "velocity_gradient", "center", "stress",
-        "points_per_cell", "rectangle", "disk", "polygon", NULL};
     const config_setting_t *l = config_setting_get_member(root, "bodies");
     Scene *sc = &sim->scene;
     if (!l)
@@ -581,7 +575,8 @@ static int read_bodies(Sim *sim, SceneReader *r, const config_setting_t *root)
             return scene_error(r, g, "bodies", "entry %d: expected a group", k);
         sc->nbodies = k + 1;
         b->line = (int)config_setting_source_line(g);
-        if (scene_check_open_keys(r, &sim->hooks, "bodies", g, keys, NULL) ||
+        if (scene_check_open_keys(r, &sim->hooks, "bodies", g, scene_body_keys,
+                                  NULL) ||
             scene_string(r, g, "name", 0, &name) < 0 ||
             scene_string(r, g, "material", 1, &mat) < 0 ||
             scene_number(r, g, "thickness", 0, sc->run.units->mm, &b->thickness) < 0 ||
@@ -747,8 +742,6 @@ static int read_hold(SceneReader *r, const config_setting_t *g,
 
 static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
-    static const char *const keys[] = {"rectangle", "fix", "velocity", "ramp", "table",
-                                       NULL};
     Scene *sc = &sim->scene;
     int st = read_regions(r, root, "boundaries", &sc->nbc, (void **)&sc->bc,
                           sizeof(Boundary));
@@ -759,7 +752,8 @@ static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *roo
         const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
         Boundary *B = &sc->bc[k];
         B->line = (int)config_setting_source_line(g);
-        if (scene_check_keys(r, g, keys) || scene_shape(r, g, &B->region) < 0 ||
+        if (scene_check_keys(r, g, scene_hold_keys) ||
+            scene_shape(r, g, &B->region) < 0 ||
             read_hold(r, g, NULL, 0, &B->hold))
             return -1;
         B->moving = B->hold.vx != 0.0 || B->hold.vy != 0.0;
@@ -769,7 +763,6 @@ static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *roo
 
 static int read_loads(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
-    static const char *const keys[] = {"rectangle", "force", "ramp", NULL};
     Scene *sc = &sim->scene;
     int st = read_regions(r, root, "loads", &sc->nloads, (void **)&sc->loads,
                           sizeof(Load));
@@ -781,7 +774,8 @@ static int read_loads(Sim *sim, SceneReader *r, const config_setting_t *root)
         Load *L = &sc->loads[k];
         double f[2];
         L->line = (int)config_setting_source_line(g);
-        if (scene_check_keys(r, g, keys) || scene_shape(r, g, &L->region) < 0 ||
+        if (scene_check_keys(r, g, scene_load_keys) ||
+            scene_shape(r, g, &L->region) < 0 ||
             scene_pair(r, g, "force", 1, f) < 0 ||
             scene_number(r, g, "ramp", 0, 0.0, &L->ramp) < 0)
             return -1;
@@ -796,8 +790,6 @@ static int read_loads(Sim *sim, SceneReader *r, const config_setting_t *root)
 
 static int read_held_points(Sim *sim, SceneReader *r, const config_setting_t *root)
 {
-    static const char *const keys[] = {"rectangle", "fix", "velocity", "ramp", "table",
-                                       NULL};
     Scene *sc = &sim->scene;
     int st = read_regions(r, root, "point_velocities", &sc->nheld, (void **)&sc->held,
                           sizeof(HeldPoints));
@@ -808,7 +800,8 @@ static int read_held_points(Sim *sim, SceneReader *r, const config_setting_t *ro
         const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
         HeldPoints *H = &sc->held[k];
         H->line = (int)config_setting_source_line(g);
-        if (scene_check_keys(r, g, keys) || scene_shape(r, g, &H->region) < 0 ||
+        if (scene_check_keys(r, g, scene_hold_keys) ||
+            scene_shape(r, g, &H->region) < 0 ||
             read_hold(r, g, "xy", 1, &H->hold))
             return -1;
     }
@@ -817,27 +810,21 @@ static int read_held_points(Sim *sim, SceneReader *r, const config_setting_t *ro
 
 int scene_read(Sim *sim, const config_t *cfg, SceneReader *r)
 {
-    static const char *const core[] = {"grid", "run", "materials", "bodies",
-                                       "boundaries", "loads", "point_velocities", NULL};
     const config_setting_t *root = config_root_setting(cfg);
     sim->scene.file = r->file;
     /* every top-level key: ours, a stage's section, a later stage's, or a typo */
     for (int k = 0; k < config_setting_length(root); k++) {
         const config_setting_t *s = config_setting_get_elem(root, (unsigned)k);
         const char *name = config_setting_name(s);
-        if (in_list(core, name) || hooks_find_key(&sim->hooks, "", name))
+        if (in_list(scene_section_keys, name) ||
+            hooks_find_key(&sim->hooks, "", name))
             continue;
         const Refusal *why = hooks_find_refusal(&sim->hooks, name, NULL);
         if (why)
             return scene_error(r, s, name, "this scene needs %s; this build "
                                "does not have it", why->stage);
-        char list[256] = "";
-        append_list(list, sizeof list, core);
-        for (int j = 0; j < sim->hooks.nkeys; j++)
-            if (!sim->hooks.keys[j].section[0]) {
-                const char *one[] = {sim->hooks.keys[j].key, NULL};
-                append_list(list, sizeof list, one);
-            }
+        char list[256];
+        scene_sections_list(&sim->hooks, list, sizeof list);
         return scene_error(r, s, name, "unknown key (expected one of: %s)", list);
     }
     if (read_grid(sim, r, root) || read_run(sim, r, root) ||

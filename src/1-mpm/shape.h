@@ -11,6 +11,7 @@
 /** Nodes a point's shape functions reach (bilinear: the cell's four). */
 #define STENCIL_NODES 4
 
+/// [shape_linear]
 /**
  * @brief Values and gradients of the four shape functions of one cell.
  *
@@ -26,6 +27,7 @@
  */
 void shape_linear(double xi, double eta, double idx, double idy,
                   double S[4], double Gx[4], double Gy[4]);
+/// [shape_linear]
 
 /**
  * @brief Cell that holds (x, y) and the point's local coordinates in it.

@@ -67,6 +67,7 @@ int update_points(Sim *sim);
  *         dt_star; 0 or -1 on a non-finite stress (Sim::fail filled). */
 int update_stress(Sim *sim, double dt_star);
 
+/// [elastic_stress_increment]
 /**
  * @brief Elastic stress increment of Hooke's law in the plane (chapter 1,
  *        exercise "Hooke's law" replaces this function's file).
@@ -78,6 +79,7 @@ int update_stress(Sim *sim, double dt_star);
  */
 void elastic_stress_increment(const Material *mat, double dexx, double deyy,
                               double dexy, double s[3]);
+/// [elastic_stress_increment]
 
 /** @brief Record an instability of this step in Sim::fail: of several in
  *         one loop, the one of the lowest point index is kept, whatever

@@ -1,7 +1,8 @@
 /**
  * @file crack_output.c
- * @brief Cracks in the output: a ParaView polyline file and a CSV per
- *        snapshot, and the multi-field node count in history.csv.
+ * @brief Cracks in the output: a ParaView polyline file (listed in the
+ *        series cracks.pvd) and a CSV per snapshot, and the multi-field
+ *        node count in history.csv.
  */
 #include <stdio.h>
 
@@ -10,7 +11,8 @@
 #include "output.h"
 
 /// [cracks_snapshot]
-int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index)
+int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index,
+                    const double *times)
 {
     const Cracks *C = state;
     int d = output_digits(sim, 12);
@@ -47,7 +49,10 @@ int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index)
         fprintf(f, "%d\n", off);
     }
     fprintf(f, "</DataArray>\n</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n");
-    return outfile_commit(&o);
+    if (outfile_commit(&o))
+        return -1;
+    /* the crack lines as one series in time, beside particles.pvd */
+    return output_series(sim, dir, "cracks.pvd", "cracks", "vtp", index, times);
 }
 /// [cracks_snapshot]
 

@@ -92,13 +92,14 @@ void crack_extent(Crack *c)
     }
 }
 
+const char *const crack_keys[] = {"points", NULL};
+
 /** Read one crack: its points, then the keys later stages add to a crack
  *  (which may give the points another way), then check them. */
 static int read_crack(Sim *sim, SceneReader *r, const config_setting_t *g,
                       int index, Crack *c)
 {
-    static const char *const keys[] = {"points", NULL};
-    if (scene_check_open_keys(r, &sim->hooks, "cracks", g, keys, NULL))
+    if (scene_check_open_keys(r, &sim->hooks, "cracks", g, crack_keys, NULL))
         return -1;
     c->line = (int)config_setting_source_line(g);
     const config_setting_t *l = config_setting_get_member(g, "points");

@@ -85,6 +85,7 @@ static inline Cracks *cracks_of(const Sim *sim)
     return (Cracks *)sim_state(sim, "cracks");
 }
 
+/// [crossing_tests]
 /**
  * @brief The crossing test of one segment: does the line from the
  *        particle (px, py) to the node (nx, ny) cross segment @p k of
@@ -101,6 +102,7 @@ int crack_segment_side(const Crack *c, int k, double px, double py, double nx,
  *        order the segments are tested in.
  */
 int crack_crossing(const Crack *c, double px, double py, double nx, double ny);
+/// [crossing_tests]
 
 /** @brief Test segment @p k of crack @p crack and record a crossing in
  *         @p x. @return 0, or -1 when @p x is full. */
@@ -163,6 +165,10 @@ int crack_check_points(struct SceneReader *r, const config_setting_t *s,
 /** @brief Set the extent (Crack::xmin ...) of the crack's points. */
 void crack_extent(Crack *c);
 
+/** The keys of a crack of stage 2 (NULL-ended); later stages add keys to
+ *  section "cracks". */
+extern const char *const crack_keys[];
+
 /** @brief Parse the "cracks" section and subscribe stage 2's hooks. */
 int cracks_read(Sim *sim, const config_setting_t *s, int index,
                 struct SceneReader *r);
@@ -174,8 +180,16 @@ int cracks_read_search(Sim *sim, const config_setting_t *s, int index,
 /** @brief Task 1: key every pair that crosses a crack with its side. */
 int cracks_key_fields(Sim *sim, void *state, Seam seam);
 
-/** @brief Task 7: move the crack points with the centre-of-mass velocity. */
+/// [cracks_move]
+/**
+ * @brief Task 7: move every crack point with the centre-of-mass velocity
+ *        of the nodes of its cell (all fields of a node together, eq. 7
+ *        and 32), interpolated with the shape functions (eq. 6), and
+ *        update each crack's extent.
+ * @return 0, or the value of step_fail() for a point that leaves the grid.
+ */
 int cracks_move(Sim *sim);
+/// [cracks_move]
 
 /** @brief Task 7 as a subscriber: move the cracks, then bring the
  *         crossing search up to date. */
@@ -184,8 +198,11 @@ int cracks_task7(Sim *sim, void *state, Seam seam);
 /** @brief Nodes that carry more than one velocity field this step. */
 int cracks_multi_field_nodes(const Sim *sim);
 
-/** @brief Write cracks_NNNNN.vtp and cracks_NNNNN.csv with the snapshot. */
-int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index);
+/** @brief Write cracks_NNNNN.vtp and cracks_NNNNN.csv with the snapshot,
+ *         and rewrite the series cracks.pvd to list snapshots 0 .. @p index
+ *         at their @p times. */
+int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index,
+                    const double *times);
 
 /** @brief history.csv column: number of multi-field nodes. */
 int cracks_history(const Sim *sim, void *state, FILE *f, int header);

@@ -10,8 +10,8 @@
 /// [stage2_install]
 void stage2_install(Hooks *h)
 {
-    hooks_add_key(h, "", "cracks", cracks_read);
-    hooks_add_key(h, "run", "crack_search", cracks_read_search);
+    hooks_add_key(h, "", "cracks", cracks_read, crack_keys);
+    hooks_add_key(h, "run", "crack_search", cracks_read_search, NULL);
     hooks_add_field_key(h, "crack side", 2);      /* fields 1 and 2 */
     hooks_add_choice(h, "run.crack_search", "plain", &crossing_plain);
 }

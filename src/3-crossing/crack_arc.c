@@ -15,12 +15,13 @@ static const double DEGREE = 3.14159265358979323846 / 180.0;
 /** Most segments an arc may have (a crack of more is a scene error). */
 #define ARC_MAX_SEGMENTS 10000000
 
+const char *const crack_arc_keys[] = {"center", "radius", "angles", "segments",
+                                      NULL};
+
 /// [crack_read_arc]
 int crack_read_arc(Sim *sim, const config_setting_t *s, int index,
                    SceneReader *r)
 {
-    static const char *const keys[] = {"center", "radius", "angles",
-                                       "segments", NULL};
     Crack *c = &cracks_of(sim)->crack[index];
     const Scene *sc = &sim->scene;
     double centre[2], radius, angles[2], segments;
@@ -29,7 +30,7 @@ int crack_read_arc(Sim *sim, const config_setting_t *s, int index,
                            "radius = r; angles = [from, to]; }");
     if (c->n)
         return scene_error(r, s, "arc", "a crack has points or an arc, not both");
-    if (scene_check_keys(r, s, keys) || scene_pair(r, s, "center", 1, centre) < 0 ||
+    if (scene_check_keys(r, s, crack_arc_keys) || scene_pair(r, s, "center", 1, centre) < 0 ||
         scene_number(r, s, "radius", 1, 0.0, &radius) < 0 ||
         scene_pair(r, s, "angles", 1, angles) < 0)
         return -1;

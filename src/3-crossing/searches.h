@@ -46,6 +46,9 @@ extern const CrossingSearch crossing_screened;
 /** @brief The segment index: test only the segments that reach the cell. */
 extern const CrossingSearch crossing_indexed;
 
+/** The keys of cracks[i].arc (NULL-ended). */
+extern const char *const crack_arc_keys[];
+
 /**
  * @brief Read cracks[i].arc = { center = [x, y]; radius = r;
  *        angles = [from, to]; segments = n; }: the crack runs on the circle

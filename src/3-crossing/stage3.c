@@ -12,6 +12,6 @@ void stage3_install(Hooks *h)
 {
     hooks_add_choice(h, "run.crack_search", "screened", &crossing_screened);
     hooks_add_choice(h, "run.crack_search", "indexed", &crossing_indexed);
-    hooks_add_key(h, "cracks", "arc", crack_read_arc);
+    hooks_add_key(h, "cracks", "arc", crack_read_arc, crack_arc_keys);
 }
 /// [stage3_install]

@@ -49,6 +49,7 @@ void contact_friction(double ma, const double pa[2], double mb,
                       const double pb[2], const double n[2], double mu,
                       double dp[2]);
 
+/// [contact_interface_normal]
 /**
  * @brief The unit normal from body a's field to body b's at a node, from
  *        the mass gradients grad m = sum_p m_p grad S_ip of the two fields:
@@ -60,5 +61,6 @@ void contact_friction(double ma, const double pa[2], double mb,
  * @return 1, or 0 when the gradients give no direction.
  */
 int contact_interface_normal(const double ga[2], const double gb[2], double n[2]);
+/// [contact_interface_normal]
 
 #endif

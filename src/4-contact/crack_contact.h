@@ -36,6 +36,9 @@ typedef struct ContactState {
     double work;          /**< work done by contact since the start (mJ) */
 } ContactState;
 
+/** The keys of cracks.[index].contact (NULL-ended). */
+extern const char *const crack_contact_keys[];
+
 /** @brief Parse cracks.[index].contact and subscribe stage 4's hooks. */
 int crack_contact_read(Sim *sim, const config_setting_t *s, int index,
                        struct SceneReader *r);

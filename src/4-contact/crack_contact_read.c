@@ -34,11 +34,13 @@ static ContactState *contact_state(Sim *sim)
     return S;
 }
 
+const char *const crack_contact_keys[] = {"law", "mu", "V_sep", "V_contact",
+                                          NULL};
+
 /// [crack_contact_read]
 int crack_contact_read(Sim *sim, const config_setting_t *s, int index,
                        SceneReader *r)
 {
-    static const char *const keys[] = {"law", "mu", "V_sep", "V_contact", NULL};
     if (config_setting_type(s) != CONFIG_TYPE_GROUP)
         return scene_error(r, s, "contact", "expected a group { law = "
                            "\"frictionless\" | \"friction\" | \"stick\"; ... }");
@@ -55,7 +57,7 @@ int crack_contact_read(Sim *sim, const config_setting_t *s, int index,
     }
     CrackContact *c = &S->crack[index];
     c->line = (int)config_setting_source_line(s);
-    return scene_check_keys(r, s, keys) || contact_law_read(r, s, 1, &c->law);
+    return scene_check_keys(r, s, crack_contact_keys) || contact_law_read(r, s, 1, &c->law);
 }
 /// [crack_contact_read]
 

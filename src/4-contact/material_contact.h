@@ -60,6 +60,9 @@ typedef struct MaterialContact {
 int material_group_read(Sim *sim, const config_setting_t *s, int index,
                         struct SceneReader *r);
 
+/** The keys of an entry of the "contact" section (NULL-ended). */
+extern const char *const material_contact_keys[];
+
 /** @brief Read the "contact" section (pairs of groups and their laws) and
  *         subscribe stage 4's material-contact hooks. */
 int material_contact_read(Sim *sim, const config_setting_t *s, int index,

@@ -104,12 +104,13 @@ static int read_pair(SceneReader *r, const config_setting_t *e,
     return 0;
 }
 
+const char *const material_contact_keys[] = {"pair", "law", "mu", "V_sep",
+                                             "V_contact", NULL};
+
 /// [material_contact_read]
 int material_contact_read(Sim *sim, const config_setting_t *s, int index,
                           SceneReader *r)
 {
-    static const char *const keys[] = {"pair", "law", "mu", "V_sep", "V_contact",
-                                       NULL};
     (void)index;
     if (config_setting_type(s) != CONFIG_TYPE_LIST || config_setting_length(s) < 1)
         return scene_error(r, s, "contact", "expected a list of pairs ( { pair = "
@@ -137,7 +138,7 @@ int material_contact_read(Sim *sim, const config_setting_t *s, int index,
                              "{ pair = [\"a\", \"b\"]; law = ...; }", k);
             break;
         }
-        rc = scene_check_keys(r, e, keys) || read_pair(r, e, names) ||
+        rc = scene_check_keys(r, e, material_contact_keys) || read_pair(r, e, names) ||
              contact_law_read(r, e, 0, &read[k]);
         for (int j = 0; j < 2 && !rc; j++) {
             gi[2 * k + j] = group_index(sim, M, names[j]);

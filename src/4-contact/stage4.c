@@ -12,9 +12,9 @@
 /// [stage4_install]
 void stage4_install(Hooks *h)
 {
-    hooks_add_key(h, "cracks", "contact", crack_contact_read);
-    hooks_add_key(h, "bodies", "contact_group", material_group_read);
-    hooks_add_key(h, "", "contact", material_contact_read);
+    hooks_add_key(h, "cracks", "contact", crack_contact_read, crack_contact_keys);
+    hooks_add_key(h, "bodies", "contact_group", material_group_read, NULL);
+    hooks_add_key(h, "", "contact", material_contact_read, material_contact_keys);
     hooks_add_field_key(h, "contact group", 5);   /* groups 0 .. 31 */
 }
 /// [stage4_install]

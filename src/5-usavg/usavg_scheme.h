@@ -8,8 +8,10 @@
 
 #include "scene.h"
 
+/// [usavg_scheme]
 /** @brief USAVG: which shares of the strain increment are taken at Task 2
  *         and at Task 6, and whether Task 6 re-extrapolates first. */
 UpdateScheme usavg_scheme(void);
+/// [usavg_scheme]
 
 #endif

@@ -61,7 +61,7 @@ static int plugin_read_group(Sim *sim, const config_setting_t *s, int index,
 /** The plug-in's installer: what a later stage's stageN_install() does. */
 static void plugin_install(Hooks *h)
 {
-    assert_int_equal(hooks_add_key(h, "materials", "group", plugin_read_group), 0);
+    assert_int_equal(hooks_add_key(h, "materials", "group", plugin_read_group, NULL), 0);
     assert_true(hooks_add_field_key(h, "test group", 4) >= 0);
 }
 
