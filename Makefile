@@ -201,7 +201,7 @@ docs:
 	@sh tools/deps.sh docs
 	@$(MAKE) --no-print-directory $(DOC_FIGURES)
 	@mkdir -p build/docs
-	@rm -f build/docs/warnings.log
+	@rm -rf build/docs/warnings.log build/docs/html   # no page of an older book
 	@echo doxygen Doxyfile; doxygen Doxyfile 2>build/docs/warnings.log; rc=$$?; \
 	 rm -rf build/docs/html/mathjax && mkdir -p build/docs/html/mathjax && \
 	 cp -RL $(addprefix $(MATHJAX)/,$(MATHJAX_PARTS)) build/docs/html/mathjax/ || exit 1; \
@@ -221,6 +221,9 @@ FIG_RUN_fig1b := build/stage1/mpm
 FIG_OUT_fig2 := fig2.png
 FIG_RUN_fig2 := build/stage2/tests/2-fields/scene_fig2
 FIG_USES_fig2 := figures/fig1/dcb_full.cfg figures/fig1/dcb_half.cfg
+FIG_OUT_fig-patch := fig-patch.png fig-patch.txt
+FIG_RUN_fig-patch := build/stage2/mpm
+FIG_USES_fig-patch := figures/fig1/dcb_full.cfg figures/fig1/dcb_half.cfg
 FIG_OUT_fig3 := fig3.png fig3-openings.png
 FIG_RUN_fig3 := build/stage4/mpm build/stage4/tests/4-contact/scene_fig3
 FIG_OUT_fig4 := fig4.png fig4-contact.png
