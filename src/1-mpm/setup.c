@@ -315,20 +315,21 @@ int setup_check_totals(const Sim *sim, char *err, size_t errlen)
         return 0;
     const Scene *sc = &sim->scene;
     const char *eu = sc->run.units->energy;
+    char at[SCENE_AT_LEN];
     for (int b = 0; b < sc->nbodies; b++) {
         body_totals(sim, b, &t);
         const Body *B = &sc->bodies[b];
         if (!isfinite(t.kinetic) || !isfinite(t.px) || !isfinite(t.py)) {
-            snprintf(err, errlen, "%s:%d: body \"%s\": its kinetic energy %g %s or "
+            snprintf(err, errlen, "%s: body \"%s\": its kinetic energy %g %s or "
                      "momentum (%g, %g) is not finite: rho, thickness and velocity "
-                     "are too large together", sc->file, B->line, B->name,
+                     "are too large together", body_at(sc, B, at), B->name,
                      t.kinetic, eu, t.px, t.py);
             return -1;
         }
         if (!isfinite(t.strain)) {
-            snprintf(err, errlen, "%s:%d: body \"%s\": its strain energy %g %s is "
+            snprintf(err, errlen, "%s: body \"%s\": its strain energy %g %s is "
                      "not finite: stress, thickness and cell_size are too large "
-                     "together", sc->file, B->line, B->name, t.strain, eu);
+                     "together", body_at(sc, B, at), B->name, t.strain, eu);
             return -1;
         }
     }
