@@ -73,13 +73,14 @@ body_of() {  # body_of PPC POINT: the body's name
         <(sed -n '/^bodies/,/^);/p' "$SCENE")
 }
 
-# finite DIR: every data row of the run's csv files is numbers only; prints
+# finite DIR: every data row of the run's csv files is numbers only (a
+# snapshot's "# t = ..." line and the column names are not data); prints
 # the offending file and line, returns 1 on a violation
 finite() {
     local f bad=0
     for f in "$1"/*.csv; do
         [ -e "$f" ] || continue
-        awk -F, 'NR > 1 { for (k = 1; k <= NF; k++)
+        awk -F, '/^#/ { next } !named { named = 1; next } { for (k = 1; k <= NF; k++)
                      if ($k !~ /^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$/) {
                          printf "%s:%d: field %d is \"%s\"\n", FILENAME, NR, k, $k; exit 1 } }' "$f" \
             || bad=1
