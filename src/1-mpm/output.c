@@ -73,7 +73,7 @@ void output_history_header(const Sim *sim, FILE *f)
     fputc('\n', f);
 }
 
-void output_history_row(Sim *sim, FILE *f)
+Totals output_history_row(Sim *sim, FILE *f)
 {
     Totals t = sim_totals(sim);
     const Particles *P = &sim->pts;
@@ -88,6 +88,7 @@ void output_history_row(Sim *sim, FILE *f)
         fprintf(f, ",%.*g", d, sim->bodyke[b]);
     history_columns(sim, f, 0);
     fputc('\n', f);
+    return t;
 }
 
 static void vtu_scalar(FILE *f, const char *name, const double *a, int n, int d)

@@ -29,8 +29,9 @@ int output_make_dir(const char *dir);
 /** @brief Write the header row of history.csv. */
 void output_history_header(const Sim *sim, FILE *f);
 
-/** @brief Append one row of history.csv for the current state. */
-void output_history_row(Sim *sim, FILE *f);
+/** @brief Append one row of history.csv for the current state.
+ *  @return the totals it wrote (the run loop checks that they are finite). */
+Totals output_history_row(Sim *sim, FILE *f);
 
 /**
  * @brief Write snapshot @p index: particles_NNNNN.vtu, grid_NNNNN.csv, the

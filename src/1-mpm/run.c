@@ -16,6 +16,7 @@
 #include "outfile.h"
 #include "output.h"
 #include "sim.h"
+#include "step.h"
 
 static double wall_seconds(void)
 {
@@ -69,10 +70,23 @@ static int history_flush(History *h)
     return -1;
 }
 
+/** Append a row; -1 when it cannot be written, -3 when the totals it
+ *  holds are not finite though every point is (sums that overflow). */
 static int history_row(Sim *sim, History *h)
 {
-    output_history_row(sim, h->f);
-    return history_flush(h);
+    Totals t = output_history_row(sim, h->f);
+    if (history_flush(h))
+        return -1;
+    const char *what = !isfinite(t.kinetic) ? "total kinetic energy" :
+                       !isfinite(t.strain) ? "total strain energy" :
+                       !isfinite(t.px) ? "total momentum x" :
+                       !isfinite(t.py) ? "total momentum y" : NULL;
+    if (!what)
+        return 0;
+    double v = !isfinite(t.kinetic) ? t.kinetic : !isfinite(t.strain) ? t.strain :
+               !isfinite(t.px) ? t.px : t.py;
+    step_fail(sim, -1, what, v);
+    return -3;
 }
 
 /** Open history.csv: new with its header and first row, or, to restart,
@@ -128,8 +142,8 @@ static int snapshot_now(Sim *sim, RunProgress *rp, const char *dir)
 }
 
 /** Start a run: a new one (history header, snapshot 0), or one that goes
- *  on from the checkpoint in @p dir. @return 0, 1 (checkpoint refused) or
- *  2 (output error). */
+ *  on from the checkpoint in @p dir. @return 0, 1 (checkpoint refused),
+ *  2 (output error) or 3 (sums not finite at the start). */
 static int run_start(Sim *sim, RunProgress *rp, History *h, const char *dir,
                      int restart)
 {
@@ -150,8 +164,9 @@ static int run_start(Sim *sim, RunProgress *rp, History *h, const char *dir,
         return 2;
     }
     free(old);
-    if (history_open(sim, h, dir, 0))
-        return 2;
+    int hr = history_open(sim, h, dir, 0);
+    if (hr)
+        return hr == -3 ? 3 : 2;
     rp->asked = 1;
     rp->snap_at = sim->scene.run.snapshots > 0 ? snapshot_step(sim, 1) : -1;
     if (sim->scene.run.snapshots > 0 && snapshot_now(sim, rp, dir))
@@ -186,6 +201,24 @@ static int run_stopped(Sim *sim, RunProgress *rp, const History *h,
     return signo ? 128 + signo : 0;
 }
 
+/** The instability stop's message: step, time, point (if one) and
+ *  quantity. */
+static void report_unstable(const Sim *sim, const char *outdir, int progress)
+{
+    const Failure *f = &sim->fail;
+    const char *unit = sim->scene.run.units->time;
+    if (progress)
+        fputc('\n', stderr);
+    if (f->particle >= 0)
+        fprintf(stderr, "mpm: unstable at step %ld (t = %.6g %s): particle %d "
+                "%s = %g; stopping, output so far is in %s\n", f->step, f->time,
+                unit, f->particle, f->quantity, f->value, outdir);
+    else                                           /* a crack point, a sum */
+        fprintf(stderr, "mpm: unstable at step %ld (t = %.6g %s): %s = %g; "
+                "stopping, output so far is in %s\n", f->step, f->time, unit,
+                f->quantity, f->value, outdir);
+}
+
 /// [sim_run]
 int sim_run(Sim *sim, const char *outdir, const RunOptions *opt)
 {
@@ -198,25 +231,23 @@ int sim_run(Sim *sim, const char *outdir, const RunOptions *opt)
         return 2;
     }
     int rc = run_start(sim, &rp, &h, outdir, opt->restart);
+    if (rc == 3)
+        report_unstable(sim, outdir, 0);
     long hist_every = run->history_every > 0 ? run->history_every
                                              : (sim->nsteps + 999) / 1000;
     int progress = opt->progress && isatty(STDERR_FILENO), signo = 0;
     double start = wall_seconds(), last = 0;
     long first = sim->step;
     while (rc == 0 && sim->step < sim->nsteps) {
-        if (sim_advance(sim)) {
-            const Failure *f = &sim->fail;
-            if (progress)
-                fputc('\n', stderr);
-            fprintf(stderr, "mpm: unstable at step %ld (t = %.6g %s): particle %d "
-                    "%s = %g; stopping, output so far is in %s\n", f->step,
-                    f->time, run->units->time, f->particle, f->quantity, f->value,
-                    outdir);
+        int hrc = 0;
+        if (sim_advance(sim) ||
+            ((sim->step % hist_every == 0 || sim->step == sim->nsteps) &&
+             (hrc = history_row(sim, &h)) == -3)) {
+            report_unstable(sim, outdir, progress);
             rc = 3;
             break;
         }
-        if ((sim->step % hist_every == 0 || sim->step == sim->nsteps) &&
-            history_row(sim, &h))
+        if (hrc)
             rc = 2;
         if (rc == 0 && sim->step == rp.snap_at && snapshot_now(sim, &rp, outdir))
             rc = 2;                                /* the step nearest k T / K */

@@ -220,6 +220,28 @@ static void program_exit_status(void **state)
     assert_int_equal(system(args), 0);
 }
 
+/** Sums that overflow while every point is finite (masses of 1e300 at
+ *  1e5 m/s: each point's m v^2 / 2 is 5e309) stop the run at its first
+ *  history row with status 3, naming the sum, instead of writing inf. */
+static void overflowing_totals_stop_the_run(void **state)
+{
+    (void)state;
+    Sim *sim = tk_load_file("tests/1-mpm/scenes/disks.cfg", NULL);
+    Particles *P = &sim->pts;
+    for (int p = 0; p < P->n; p++) {
+        P->m[p] = 1e300;
+        P->vx[p] = P->vx[p] > 0 ? 1e5 : -1e5;
+    }
+    sim_set_time_step(sim);                 /* a step that keeps them in the grid */
+    RunOptions opt = {0, 0, 0, NULL};
+    int rc = sim_run(sim, "build/test-instability-totals", &opt);
+    assert_int_equal(rc, 3);
+    assert_non_null(sim->fail.quantity);
+    assert_string_equal(sim->fail.quantity, "total kinetic energy");
+    assert_int_equal(sim->fail.step, 0);       /* the first row, at t = 0 */
+    tk_free(sim);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -228,6 +250,7 @@ int main(void)
         cmocka_unit_test(musl_stable),
         cmocka_unit_test(usf_stable),
         cmocka_unit_test(program_exit_status),
+        cmocka_unit_test(overflowing_totals_stop_the_run),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
