@@ -119,6 +119,10 @@ typedef struct Choice {
 typedef struct Method {
     const char *name;                /**< run.method */
     int (*step)(struct Sim *sim);    /**< one step; non-zero stops the run */
+    /** The method's stable time step for the loaded scene, before the
+     *  scene's run.cfl factor; NULL: the MPM rule (a cell crossed by the
+     *  fastest wave, sim_set_time_step()). */
+    double (*stable_step)(const struct Sim *sim);
 } Method;
 
 /** A part of the field key that a stage contributes (bits of a key). */

@@ -349,8 +349,11 @@ void sim_set_time_step(Sim *sim)
         c = fmax(c, sc->mat[k].wave);
     for (int p = 0; p < P->n; p++)
         v2 = fmax(v2, P->vx[p] * P->vx[p] + P->vy[p] * P->vy[p]);
-    /* the fastest wave, carried by the fastest point, crosses a cell */
-    sim->dt = sc->run.cfl * fmin(sc->dx, sc->dy) / (c + sqrt(v2));
+    const Method *method = sc->run.method;
+    if (method && method->stable_step)          /* the method's own rule */
+        sim->dt = sc->run.cfl * method->stable_step(sim);
+    else    /* the fastest wave, carried by the fastest point, crosses a cell */
+        sim->dt = sc->run.cfl * fmin(sc->dx, sc->dy) / (c + sqrt(v2));
     double steps = ceil(sc->run.time / sim->dt - 1e-9);
     /* 0: no step, or more than a long holds (sim_check_time_step says) */
     sim->nsteps = steps >= 1.0 && steps < 4e18 ? (long)steps : 0;

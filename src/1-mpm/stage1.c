@@ -8,7 +8,7 @@
 #include "sim.h"
 
 /** The MPM step of the Appendix (Tasks 0-8): the method "mpm". */
-static const Method mpm_method = {"mpm", sim_step};
+static const Method mpm_method = {"mpm", sim_step, NULL};
 
 /// [stage1_install]
 void stage1_install(Hooks *h)
