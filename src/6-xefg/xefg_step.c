@@ -1,0 +1,80 @@
+/**
+ * @file xefg_step.c
+ * @brief One explicit central-difference step of M_L a = f_ext - f_int
+ *        (eq. 31; xefg.md 2.5): the method "xefg".
+ */
+#include <math.h>
+
+#include "step.h"
+#include "xefg.h"
+
+/** External forces at time @p t: the scene's point loads through the
+ *  loaded nodes' rows, and gravity through int rho psi dV. */
+static void external_force(const Xefg *x, const Sim *sim, double t, double *f)
+{
+    const Scene *sc = &sim->scene;
+    const ShapeRows *R = &x->at_node;
+    double gx = sc->run.gx, gy = sc->run.gy;
+    if (gx != 0.0 || gy != 0.0)
+        for (int q = 0; q < x->ndof; q++) {
+            f[2 * q] += x->load[q] * gx;
+            f[2 * q + 1] += x->load[q] * gy;
+        }
+    for (int l = 0; l < sc->nloads; l++) {
+        const Load *L = &sc->loads[l];
+        double fx, fy;
+        load_point_force(L, t, &fx, &fy);
+        for (int j = 0; j < L->count; j++) {
+            int I = L->points[j];
+            for (int e = R->start[I]; e < R->start[I + 1]; e++) {
+                f[2 * R->dof[e]] += R->N[e] * fx;
+                f[2 * R->dof[e] + 1] += R->N[e] * fy;
+            }
+        }
+    }
+}
+
+/** The first parameter (lowest node) whose velocity or displacement is not
+ *  finite, or of a Gauss point whose stress is not. @return 0 or -1. */
+static int check_finite(const Xefg *x, Sim *sim)
+{
+    for (int q = 0; q < x->ndof; q++)
+        if (!isfinite(x->v[2 * q]) || !isfinite(x->v[2 * q + 1]))
+            return step_fail(sim, x->dof_node[q], "velocity",
+                             isfinite(x->v[2 * q]) ? x->v[2 * q + 1] : x->v[2 * q]);
+    for (int g = 0; g < x->ngauss; g++)
+        for (int k = 0; k < 3; k++)
+            if (!isfinite(x->gs[3 * g + k]))
+                return step_fail(sim, x->gnode[g], "stress", x->gs[3 * g + k]);
+    return 0;
+}
+
+/// [xefg_step]
+int xefg_step(Sim *sim)
+{
+    Xefg *x = xefg_of(sim);
+    double dt = sim->dt, kappa = sim->scene.run.damping;
+    double *f = x->f;
+    xefg_internal_force(x, x->gs, f);               /* f = -f_int ... */
+    for (int k = 0; k < 2 * x->ndof; k++)
+        f[k] = -f[k];
+    external_force(x, sim, sim->t, f);              /* ... + f_ext */
+    for (int q = 0; q < x->ndof; q++) {             /* v += dt M^-1 f */
+        double im = 1.0 / x->mass[q];
+        for (int k = 2 * q; k < 2 * q + 2; k++)
+            x->v[k] += dt * (f[k] * im - kappa * x->v[k]);
+    }
+    xefg_constraints_apply(x, sim->t + dt);         /* held velocities */
+    for (int k = 0; k < 2 * x->ndof; k++)
+        f[k] = dt * x->v[k];                        /* du = dt v */
+    for (int k = 0; k < 2 * x->ndof; k++)
+        x->u[k] += f[k];
+    xefg_strain_update(x, sim, f, x->gs, x->ge);    /* sigma += C d eps */
+    if (check_finite(x, sim))
+        return -1;
+    xefg_to_points(x, sim);
+    sim->t += dt;
+    sim->step++;
+    return 0;
+}
+/// [xefg_step]
