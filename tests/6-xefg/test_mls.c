@@ -424,6 +424,19 @@ static void cell_list_matches_all_pairs(void **state)
     cell_list_free(&cl);
     assert_null(cl.start);
 
+    /* a node exactly d away is not a neighbour (w(1) = 0); the distances
+     * here are exact in binary */
+    {
+        const double X[4] = {0.0, 1.0, 0.0, 1.0}, Y[4] = {0.0, 0.0, 1.0, 1.0};
+        const double dd[4] = {0.5, 0.5, 0.5, 0.5};
+        assert_int_equal(cell_list_build(&cl, 4, X, Y, 0.5), 0);
+        assert_int_equal(cell_list_find(&cl, X, Y, dd, 0.5, 0.0, out, 4), 0);
+        assert_int_equal(cell_list_find(&cl, X, Y, dd, 1.0, 0.5, out, 4), 0);
+        assert_int_equal(cell_list_find(&cl, X, Y, dd, 0.75, 1.0, out, 4), 1);
+        assert_int_equal(out[0], 3);
+        cell_list_free(&cl);
+    }
+
     /* no nodes; a cell size that is not positive */
     assert_int_equal(cell_list_build(&cl, 0, c.X, c.Y, size), 0);
     assert_int_equal(cell_list_find(&cl, c.X, c.Y, c.d, 0.5, 0.5, out, 4), 0);
