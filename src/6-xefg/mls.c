@@ -20,6 +20,7 @@
  */
 #include <lapacke.h>
 #include <math.h>
+#include <stddef.h>
 
 #include "mls.h"
 #include "spline.h"
