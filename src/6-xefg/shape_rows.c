@@ -36,8 +36,7 @@ int shape_rows_add(ShapeRows *R, int n, int grad)
         if (grow((void **)&R->dof, sizeof(int), cap) ||
             grow((void **)&R->N, sizeof(double), cap) ||
             (grad && (grow((void **)&R->Nx, sizeof(double), cap) ||
-                      grow((void **)&R->Ny, sizeof(double), cap))) ||
-            (R->keep_E && grow((void **)&R->E, sizeof(double), cap)))
+                      grow((void **)&R->Ny, sizeof(double), cap))))
             return -1;
         R->cap = cap;
     }
@@ -54,9 +53,31 @@ void shape_rows_free(ShapeRows *R)
     free(R->N);
     free(R->Nx);
     free(R->Ny);
-    free(R->E);
     *R = (ShapeRows){0};
 }
+
+/// [xefg_enrichment]
+void xefg_enrichment(const Xefg *x, int q, double px, double py, double *E,
+                     double *Ex, double *Ey)
+{
+    const CrackLine *c = &x->crack[x->dof_crack[q]];
+    int side = crack_line_side(c, px, py, NULL);
+    side = side ? side : 1;
+    *Ex = *Ey = 0.0;
+    if (x->dof_kind[q] == DOF_STEP) {
+        *E = side;                                      /* eq. 3 */
+        return;
+    }
+    double tip[2], dir[2], B[BRANCH_MAX], Bx[BRANCH_MAX], By[BRANCH_MAX];
+    crack_line_tip(c, x->dof_end[q], tip, dir);
+    int nb = branch_functions(x->set.tip, x->set.m, tip, dir, side, px, py, B,
+                              Bx, By);                  /* eq. 5 or 6 */
+    int b = x->dof_kind[q] - DOF_BRANCH;
+    *E = b < nb ? B[b] : 0.0;                           /* 0 on the tip */
+    *Ex = b < nb ? Bx[b] : 0.0;
+    *Ey = b < nb ? By[b] : 0.0;
+}
+/// [xefg_enrichment]
 
 /** Most nodes whose supports hold one place. */
 #define NEAR_MAX 512
@@ -94,33 +115,14 @@ int xefg_shape_row(const Xefg *x, const CellList *cl, const int *body_of,
         int J = near[k];
         for (int q = x->node_dof[J]; q < x->node_dof[J + 1]; q++, e++) {
             double E = 1.0, Ex = 0.0, Ey = 0.0;         /* eq. 1: 1, H, B_k */
-            int kind = x->dof_kind[q];
-            if (kind != DOF_STANDARD) {
-                const CrackLine *c = &x->crack[x->dof_crack[q]];
-                int side = crack_line_side(c, px, py, NULL);
-                side = side ? side : 1;
-                if (kind == DOF_STEP)
-                    E = side;                           /* eq. 3 */
-                else {
-                    double tip[2], dir[2], B[BRANCH_MAX], Bx[BRANCH_MAX],
-                        By[BRANCH_MAX];
-                    crack_line_tip(c, x->dof_end[q], tip, dir);
-                    int nb = branch_functions(x->set.tip, x->set.m, tip, dir,
-                                              side, px, py, B, Bx, By);
-                    int b = kind - DOF_BRANCH;          /* eq. 5 or 6 */
-                    E = b < nb ? B[b] : 0.0;
-                    Ex = b < nb ? Bx[b] : 0.0;
-                    Ey = b < nb ? By[b] : 0.0;
-                }
-            }
+            if (x->dof_kind[q] != DOF_STANDARD)
+                xefg_enrichment(x, q, px, py, &E, &Ex, &Ey);
             R->dof[e] = q;
             R->N[e] = phi[k] * E;
             if (grad) {
                 R->Nx[e] = phx[k] * E + phi[k] * Ex;
                 R->Ny[e] = phy[k] * E + phi[k] * Ey;
             }
-            if (R->keep_E)
-                R->E[e] = E;
         }
     }
     return 0;

@@ -125,6 +125,7 @@ static int xefg_checkpoint(Sim *sim, void *state, FILE *f, int save)
     if (checkpoint_io(f, m, sizeof m, save) || m[0] != n[0] || m[1] != n[1] ||
         checkpoint_io(f, x->u, 2 * sizeof(double) * (size_t)x->ndof, save) ||
         checkpoint_io(f, x->v, 2 * sizeof(double) * (size_t)x->ndof, save) ||
+        checkpoint_io(f, x->a, 2 * sizeof(double) * (size_t)x->ndof, save) ||
         checkpoint_io(f, x->gs, 3 * sizeof(double) * (size_t)x->ngauss, save) ||
         checkpoint_io(f, x->ge, 3 * sizeof(double) * (size_t)x->ngauss, save))
         return -1;

@@ -38,9 +38,6 @@ typedef struct ShapeRows {
     double *N;      /**< its shape function */
     double *Nx;     /**< d/dx (NULL for rows without gradients) */
     double *Ny;     /**< d/dy */
-    double *E;      /**< the enrichment (1, H or B_k) each Phi_I is
-                         multiplied by (NULL: not kept) */
-    int keep_E;     /**< fill E */
     int len;        /**< entries used */
     int cap;        /**< entries allocated */
 } ShapeRows;
@@ -79,8 +76,9 @@ typedef struct Xefg {
     double *mass;       /**< lumped mass of each parameter (section 2.5) */
     double *load;       /**< int rho psi dV of each (gravity) */
     double *u;          /**< parameters' displacements (2 per) */
-    double *v;          /**< their velocities, at the half step (2 per) */
-    double *f;          /**< scratch: forces (2 per) */
+    double *v;          /**< their velocities (2 per) */
+    double *a;          /**< their accelerations without damping (2 per) */
+    double *f;          /**< scratch: increments (2 per) */
     int ngauss;         /**< Gauss points */
     double *gw;         /**< weight: area x thickness */
     double *gx;         /**< position x */
@@ -126,6 +124,14 @@ int xefg_shape_row(const Xefg *x, const CellList *cl, const int *body_of,
                    int body, double px, double py, int grad, ShapeRows *R);
 
 /**
+ * @brief The enrichment E of parameter @p q at (px, py), H (eq. 3) or its
+ *        branch function (eq. 5-6), and its gradient (0 for H off the
+ *        crack); a place on the crack counts as on its left side.
+ */
+void xefg_enrichment(const Xefg *x, int q, double px, double py, double *E,
+                     double *Ex, double *Ey);
+
+/**
  * @brief Internal forces f = int B^T sigma dV (eq. 30) of the Gauss points'
  *        stresses @p gs into @p f (2 per parameter).
  */
@@ -158,6 +164,10 @@ void xefg_constraints_apply(Xefg *x, double t);
 /** @brief One explicit central-difference step (section 2.5): the "xefg"
  *         row of the method table. @return 0, or -1 (Sim::fail filled). */
 int xefg_step(Sim *sim);
+
+/** @brief The accelerations a = M^-1 (f_ext(@p t) - f_int) from the
+ *         Gauss points' stresses (before damping), into Xefg::a. */
+void xefg_accelerations(Xefg *x, const Sim *sim, double t);
 
 /** @brief The material points' positions, velocities, stresses and strains
  *         from the parameters (for outputs and history). */

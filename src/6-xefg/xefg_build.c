@@ -211,7 +211,11 @@ static int gauss_points(Xefg *x, const Sim *sim, const CellList *cl,
         return -1;
     }
     int gcap = 0;
-    x->gauss.keep_E = 1;
+    double *diag = calloc((size_t)x->ndof, sizeof(double));
+    if (!diag) {
+        free(q);
+        return -1;
+    }
     for (int I = 0; I < x->nnode; I++) {
         int m = quad_cell(x->crack, x->ncrack, x->X[I] - x->hx[I],
                           x->Y[I] - x->hy[I], x->X[I] + x->hx[I],
@@ -259,21 +263,32 @@ static int gauss_points(Xefg *x, const Sim *sim, const CellList *cl,
             if (rc) {
                 double px = q[k].x, py = q[k].y;
                 free(q);
+                free(diag);
                 return row_error(x, sim, I, px, py, rc, err, errlen);
             }
             for (int e = x->gauss.start[g]; e < x->gauss.start[g + 1]; e++) {
                 int d = x->gauss.dof[e];
-                /* row sum rho Phi_I for standard and step parameters
-                 * (H^2 = 1), rho Phi_I B_k^2 for branch ones (2.5) */
-                x->mass[d] += rho * x->gw[g] * x->gauss.N[e] * x->gauss.E[e];
-                x->load[d] += rho * x->gw[g] * x->gauss.N[e];
+                double rw = rho * x->gw[g], N = x->gauss.N[e], E = 1.0, Ex, Ey;
+                if (x->dof_kind[d] != DOF_STANDARD)
+                    xefg_enrichment(x, d, q[k].x, q[k].y, &E, &Ex, &Ey);
+                else
+                    x->mass[d] += rw * N;           /* row sum: int rho Phi_I */
+                diag[d] += rw * E * E;              /* int_supp rho E^2 */
+                x->load[d] += rw * N;
             }
         }
     }
     free(q);
-    free(x->gauss.E);                    /* only the masses wanted it */
-    x->gauss.E = NULL;
-    x->gauss.keep_E = 0;
+    /* section 2.5: an enriched parameter gets the row-sum mass of its node
+     * times the mean of E^2 over the node's support, m_I <E^2> (after
+     * Elguedj et al.): H^2 = 1 gives a step parameter m_I whatever the cut,
+     * so the stable step cannot collapse when a crack clips a support */
+    for (int d = 0; d < x->ndof; d++) {
+        int s0 = x->node_dof[x->dof_node[d]];
+        if (d != s0)
+            x->mass[d] = x->mass[s0] * diag[d] / diag[s0];
+    }
+    free(diag);
     if (x->nnode && x->gauss.n != x->ngauss) {
         snprintf(err, errlen, "%s: out of memory for the Gauss points",
                  sim->scene.file);
@@ -310,9 +325,10 @@ static int initial_state(Xefg *x, const Sim *sim)
     x->u = calloc(n2, sizeof(double));
     x->v = calloc(n2, sizeof(double));
     x->f = calloc(n2, sizeof(double));
+    x->a = calloc(n2, sizeof(double));
     x->gs = malloc(3 * sizeof(double) * (size_t)x->ngauss);
     x->ge = malloc(3 * sizeof(double) * (size_t)x->ngauss);
-    if (!x->u || !x->v || !x->f || !x->gs || !x->ge)
+    if (!x->u || !x->v || !x->f || !x->a || !x->gs || !x->ge)
         return -1;
     for (int I = 0; I < x->nnode; I++) {
         x->v[2 * x->node_dof[I]] = P->vx[I];
@@ -365,6 +381,7 @@ int xefg_build(Xefg *x, const Sim *sim, char *err, size_t errlen)
                  x->omega_max);
         goto done;
     }
+    xefg_accelerations(x, sim, 0.0);              /* a(0) */
     rc = 0;
     goto done;
 oom:
@@ -380,7 +397,7 @@ void xefg_free(Xefg *x)
 {
     void *arrays[] = {x->X, x->Y, x->d, x->hx, x->hy, x->crack, x->node_dof,
                       x->dof_node, x->dof_kind, x->dof_crack, x->dof_end,
-                      x->mass, x->load, x->u, x->v, x->f, x->gw, x->gx, x->gy,
+                      x->mass, x->load, x->u, x->v, x->a, x->f, x->gw, x->gx, x->gy,
                       x->gnode, x->gs, x->ge, x->cell_w};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
         free(arrays[k]);

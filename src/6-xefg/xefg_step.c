@@ -1,7 +1,10 @@
 /**
  * @file xefg_step.c
  * @brief One explicit central-difference step of M_L a = f_ext - f_int
- *        (eq. 31; xefg.md 2.5): the method "xefg".
+ *        (eq. 31; xefg.md 2.5): the method "xefg". It is written as two
+ *        half kicks around the drift (velocity Verlet), which is the same
+ *        central difference with velocities at whole steps as well, so that
+ *        the energy of history.csv is taken at one instant.
  */
 #include <math.h>
 
@@ -49,27 +52,40 @@ static int check_finite(const Xefg *x, Sim *sim)
     return 0;
 }
 
+/** a = M^-1 (f_ext(t) - f_int), the parameters' accelerations before
+ *  damping, from the Gauss points' stresses now. */
+void xefg_accelerations(Xefg *x, const Sim *sim, double t)
+{
+    double *a = x->a;
+    xefg_internal_force(x, x->gs, a);
+    for (int k = 0; k < 2 * x->ndof; k++)
+        a[k] = -a[k];
+    external_force(x, sim, t, a);
+    for (int q = 0; q < x->ndof; q++) {
+        a[2 * q] /= x->mass[q];
+        a[2 * q + 1] /= x->mass[q];
+    }
+}
+
 /// [xefg_step]
 int xefg_step(Sim *sim)
 {
     Xefg *x = xefg_of(sim);
     double dt = sim->dt, kappa = sim->scene.run.damping;
-    double *f = x->f;
-    xefg_internal_force(x, x->gs, f);               /* f = -f_int ... */
-    for (int k = 0; k < 2 * x->ndof; k++)
-        f[k] = -f[k];
-    external_force(x, sim, sim->t, f);              /* ... + f_ext */
-    for (int q = 0; q < x->ndof; q++) {             /* v += dt M^-1 f */
-        double im = 1.0 / x->mass[q];
-        for (int k = 2 * q; k < 2 * q + 2; k++)
-            x->v[k] += dt * (f[k] * im - kappa * x->v[k]);
+    double *v = x->v, *a = x->a, *du = x->f;
+    int n2 = 2 * x->ndof;
+    for (int k = 0; k < n2; k++)                    /* v(t + dt/2) */
+        v[k] += 0.5 * dt * (a[k] - kappa * v[k]);
+    xefg_constraints_apply(x, sim->t + 0.5 * dt);   /* held velocities */
+    for (int k = 0; k < n2; k++) {                  /* u(t + dt) */
+        du[k] = dt * v[k];
+        x->u[k] += du[k];
     }
-    xefg_constraints_apply(x, sim->t + dt);         /* held velocities */
-    for (int k = 0; k < 2 * x->ndof; k++)
-        f[k] = dt * x->v[k];                        /* du = dt v */
-    for (int k = 0; k < 2 * x->ndof; k++)
-        x->u[k] += f[k];
-    xefg_strain_update(x, sim, f, x->gs, x->ge);    /* sigma += C d eps */
+    xefg_strain_update(x, sim, du, x->gs, x->ge);   /* sigma += C d eps */
+    xefg_accelerations(x, sim, sim->t + dt);        /* a(t + dt) */
+    for (int k = 0; k < n2; k++)                    /* v(t + dt) */
+        v[k] += 0.5 * dt * (a[k] - kappa * v[k]);
+    xefg_constraints_apply(x, sim->t + dt);
     if (check_finite(x, sim))
         return -1;
     xefg_to_points(x, sim);
