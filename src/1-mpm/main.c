@@ -183,10 +183,13 @@ static int load_and_run(Sim *sim, Args *a)
         fprintf(stderr, "mpm: %s\n", err);
         goto done;
     }
+    const Method *method = sim->scene.run.method;
+    int mpm = method->step == sim_step;      /* else a method of its own */
     printf("mpm (stage %d): %s: %d points, grid %d x %d cells, dt = %.6g %s, "
-           "%ld steps, update %s\n", mpm_stage(), a->scene, sim->pts.n,
+           "%ld steps, %s %s\n", mpm_stage(), a->scene, sim->pts.n,
            sim->scene.ncx, sim->scene.ncy, sim->dt, sim->scene.run.units->time,
-           sim->nsteps, sim->scene.run.scheme->name);
+           sim->nsteps, mpm ? "update" : "method",
+           mpm ? sim->scene.run.scheme->name : method->name);
     fflush(stdout);
     RunOptions opt = {!a->quiet, a->restart, a->stop_at, &stop_signal};
     rc = sim_run(sim, a->outdir, &opt);

@@ -25,6 +25,8 @@ int energy_balance_prepare(Sim *sim, void *state, char *err, size_t errlen)
 {
     (void)state;
     const Scene *sc = &sim->scene;
+    if (sc->run.method && sc->run.method->step != sim_step)
+        return 0;           /* the account follows the MPM step's Tasks */
     EnergyBalance *B = calloc(1, sizeof *B);
     if (!B || sim_attach(sim, "energy balance", B, energy_balance_release)) {
         free(B);

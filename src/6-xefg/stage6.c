@@ -115,6 +115,20 @@ static int xefg_history(const Sim *sim, void *state, FILE *f, int header)
                    xefg_strain_energy(x, sim)) < 0 ? -1 : 0;
 }
 
+/** The end of a run: the discretisation and the energy now. */
+static int xefg_report(const Sim *sim, void *state, FILE *f)
+{
+    (void)state;
+    const Xefg *x = xefg_of(sim);
+    const char *eu = sim->scene.run.units->energy, *tu = sim->scene.run.units->time;
+    return fprintf(f, "mpm: xefg: %d nodes, %d parameters (%d step, %d branch), "
+                   "%d Gauss points; stable step %.6g %s (power iteration, %d "
+                   "iterations); energy at t = %g %s: kinetic %.6g + strain %.6g "
+                   "%s\n", x->nnode, x->ndof, x->nstep, x->nbranch, x->ngauss,
+                   x->stable_step, tu, x->power_iterations, sim->t, tu,
+                   xefg_kinetic_energy(x), xefg_strain_energy(x, sim), eu) < 0 ? -1 : 0;
+}
+
 /** The checkpoint: displacements, velocities, stresses and strains. */
 static int xefg_checkpoint(Sim *sim, void *state, FILE *f, int save)
 {
@@ -160,6 +174,7 @@ static int xefg_prepare(Sim *sim, void *state, char *err, size_t errlen)
         return -1;
     xefg_to_points(x, sim);
     if (hooks_on_history(&sim->hooks, xefg_history, x) ||
+        hooks_on_report(&sim->hooks, xefg_report, x) ||
         hooks_on_checkpoint(&sim->hooks, xefg_checkpoint, x)) {
         snprintf(err, errlen, "%s: too many subscribers at a seam",
                  sim->scene.file);
