@@ -67,6 +67,22 @@ void xefg_accelerations(Xefg *x, const Sim *sim, double t)
     }
 }
 
+/** The points, moved with the parameters, must stay on the grid that the
+ *  outputs (and MPM) use. @return 0 or -1 with the first that left. */
+static int check_in_grid(Sim *sim)
+{
+    const Particles *P = &sim->pts;
+    const Grid *g = &sim->grid;
+    double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
+    for (int p = 0; p < P->n; p++) {
+        if (!(P->x[p] >= g->ox && P->x[p] < xmax))
+            return step_fail(sim, p, "position x (left the grid)", P->x[p]);
+        if (!(P->y[p] >= g->oy && P->y[p] < ymax))
+            return step_fail(sim, p, "position y (left the grid)", P->y[p]);
+    }
+    return 0;
+}
+
 /// [xefg_step]
 int xefg_step(Sim *sim)
 {
@@ -89,6 +105,8 @@ int xefg_step(Sim *sim)
     if (check_finite(x, sim))
         return -1;
     xefg_to_points(x, sim);
+    if (check_in_grid(sim))
+        return -1;
     sim->t += dt;
     sim->step++;
     return 0;
