@@ -279,6 +279,7 @@ static int gauss_points(Xefg *x, const Sim *sim, const CellList *cl,
         }
     }
     free(q);
+    /// [xefg_lumping]
     /* section 2.5: an enriched parameter gets the row-sum mass of its node
      * times the mean of E^2 over the node's support, m_I <E^2> (after
      * Elguedj et al.): H^2 = 1 gives a step parameter m_I whatever the cut,
@@ -288,6 +289,7 @@ static int gauss_points(Xefg *x, const Sim *sim, const CellList *cl,
         if (d != s0)
             x->mass[d] = x->mass[s0] * diag[d] / diag[s0];
     }
+    /// [xefg_lumping]
     free(diag);
     if (x->nnode && x->gauss.n != x->ngauss) {
         snprintf(err, errlen, "%s: out of memory for the Gauss points",
