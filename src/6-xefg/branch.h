@@ -23,8 +23,13 @@ typedef enum {
  * (r, theta) are polar coordinates about the tip in its frame (x' along
  * dir), with theta = side * acos(x'/r), so that theta = +-pi on the two
  * faces of the crack and the jump follows the crack even where it bends.
+ * @param kind  the set: eq. 5 or eq. 6
  * @param m     exponent of eq. 6 (BRANCH_COHESIVE), m >= 1
+ * @param tip   the tip's point
+ * @param dir   the unit vector ahead of the tip
  * @param side  the point's side of the crack (crack_line_side(), +1 or -1)
+ * @param x     the point's x
+ * @param y     the point's y
  * @param B     the values (BRANCH_MAX room)
  * @param dBx   d/dx of each (NULL: not wanted; then dBy too)
  * @param dBy   d/dy of each

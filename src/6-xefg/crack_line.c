@@ -49,39 +49,48 @@ static double segment_closest(const CrackLine *c, int k, double x, double y,
 /// [crack_line_side]
 int crack_line_side(const CrackLine *c, double x, double y, double *dist)
 {
-    int nseg = c->n - 1, kb = 0;
+    int nseg = c->n - 1, kb = -1;
     double best = INFINITY, tb = 0;
     for (int k = 0; k < nseg; k++) {
-        double t, d2 = segment_closest(c, k, x, y, &t);
+        double t, d2;
+        if (c->x[k + 1] == c->x[k] && c->y[k + 1] == c->y[k])
+            continue;                   /* a repeated point: no segment */
+        d2 = segment_closest(c, k, x, y, &t);
         if (d2 < best) {
             best = d2;
             kb = k;
             tb = t;
         }
     }
+    if (kb < 0) {                       /* all its points are one point */
+        if (dist)
+            *dist = hypot(x - c->x[0], y - c->y[0]);
+        return 0;
+    }
     if (dist)
         *dist = sqrt(best);
-    /* the closest point q and the directions of the segments through it */
-    double ux, uy, qx, qy, side;
+    /* the segment that shares the closest point when it is a vertex */
+    int other = -1;
+    if (tb == 0 || tb == 1) {
+        int step = tb == 0 ? -1 : 1;
+        for (int k = kb + step; k >= 0 && k < nseg && other < 0; k += step)
+            if (c->x[k + 1] != c->x[k] || c->y[k + 1] != c->y[k])
+                other = k;
+    }
+    double ux, uy, side;
+    int v = tb == 1 ? kb + 1 : kb;      /* a point of segment kb's line */
+    double wx = x - c->x[v], wy = y - c->y[v];
     segment_dir(c, kb, &ux, &uy);
-    if ((tb == 0 && kb > 0) || (tb == 1 && kb + 1 < nseg)) {
-        /* q is a vertex shared by two segments: both are equally close.
-         * Their pseudo-normal (the sum of the two unit normals) gives the
-         * right side even where the crack folds back sharply, where the
-         * normal of either segment alone can be wrong. */
-        int other = tb == 0 ? kb - 1 : kb + 1, v = tb == 0 ? kb : kb + 1;
+    /* the cross product of the segment's direction with (point - q), eq. 4 */
+    side = ux * wy - uy * wx;
+    if (other >= 0) {
+        /* q is a vertex shared by two segments, both equally close. Their
+         * pseudo-normal (the sum of the two unit normals) gives the right
+         * side even where the crack folds back sharply, where the normal of
+         * either segment alone can be wrong. */
         double vx, vy;
         segment_dir(c, other, &vx, &vy);
-        qx = c->x[v];
-        qy = c->y[v];
-        side = ux * (y - qy) - uy * (x - qx) + vx * (y - qy) - vy * (x - qx);
-    } else {
-        /* interior point or a free end: the cross product of the segment
-         * direction with (point - q), eq. 4 */
-        int v = tb == 1 ? kb + 1 : kb;
-        qx = c->x[v];
-        qy = c->y[v];
-        side = ux * (y - qy) - uy * (x - qx);
+        side += vx * wy - vy * wx;
     }
     return (side > 0) - (side < 0);
 }

@@ -26,7 +26,12 @@ typedef enum {
 /**
  * @brief The side of (x, y): +1 left of the crack (walking from point 0 to
  *        point n - 1), -1 right, 0 on it; the closest segment decides
- *        (eq. 3-4: H = sign f, f the signed distance).
+ *        (eq. 3-4: H = sign f, f the signed distance). Where the closest
+ *        point is a vertex shared by two segments, the sum of their unit
+ *        normals decides (right also where the crack folds back sharply).
+ * @param c    the crack
+ * @param x    the point's x
+ * @param y    the point's y
  * @param dist distance to the crack (NULL: not wanted)
  */
 int crack_line_side(const CrackLine *c, double x, double y, double *dist);
@@ -35,7 +40,12 @@ int crack_line_side(const CrackLine *c, double x, double y, double *dist);
  * @brief How the disk of centre (x, y) and radius @p r meets the crack: a
  *        tip closer than r makes it SUPPORT_TIP (that end in *end), else
  *        any segment closer than r makes it SUPPORT_CUT.
- * @param end the end (0 or 1) of the tip it holds (may be NULL)
+ * @param c   the crack
+ * @param x   the disk's centre x
+ * @param y   the disk's centre y
+ * @param r   its radius
+ * @param end the end (0 or 1) of the tip it holds, the nearer of two; -1
+ *            when it holds none (may be NULL)
  */
 SupportCut crack_line_cut(const CrackLine *c, double x, double y, double r,
                           int *end);

@@ -36,6 +36,7 @@ int gauss_legendre(int n, double *xi, double *w);
  *        lies strictly inside a piece, off the crack.
  * @return the number of points, written to @p out; when more than @p cap,
  *         the number needed (nothing written beyond cap); -1 for a bad n
+ *         (or out of memory)
  */
 int quad_cell(const CrackLine *cracks, int ncracks, double x0, double y0,
               double x1, double y1, int n, QuadPoint *out, int cap);

@@ -349,6 +349,23 @@ static void side_rule_on_bent_cracks(void **state)
     assert_int_equal(crack_line_side(&z, 1.0, 2.5, NULL), 1);
     /* exactly on the line ahead of an axis-aligned end: 0 */
     assert_int_equal(crack_line_side(&z, 3.0, 2.0, NULL), 0);
+
+    /* repeated points are no segments: a repeated first point, and one at
+     * a bend (the pseudo-normal of the real segments either side) */
+    static const double r1x[3] = {0.75, 0.75, 1.75}, r1y[3] = {0.25, 0.25, -0.5};
+    CrackLine r1 = {3, r1x, r1y, {0, 0}};
+    assert_int_equal(crack_line_side(&r1, 0.8, 0.5, &d), 1);
+    assert_close(d, hypot(0.05, 0.25), 1e-15);
+    assert_int_equal(crack_line_side(&r1, 0.7, 0.1, NULL), -1);
+    static const double r2x[4] = {0, 1, 1, 1}, r2y[4] = {0, 0, 0, 1};
+    CrackLine r2 = {4, r2x, r2y, {0, 0}};
+    assert_int_equal(crack_line_side(&r2, 1.5, -0.5, NULL), -1);
+    assert_int_equal(crack_line_side(&r2, 1.2, -0.1, NULL), -1);
+    assert_int_equal(crack_line_side(&r2, 0.9, 0.1, NULL), 1);
+    static const double r3x[2] = {0.5, 0.5}, r3y[2] = {0.5, 0.5};
+    CrackLine r3 = {2, r3x, r3y, {0, 0}};
+    assert_int_equal(crack_line_side(&r3, 0.5, 1.5, &d), 0);
+    assert_close(d, 1.0, 0.0);
 }
 
 /* -- supports and tips (eq. 1-2) ------------------------------------------ */

@@ -4,7 +4,7 @@
  *        exactness; tensor points of an uncut cell; a cell cut by a crack
  *        integrates each side's area and moments exactly; a tip cell keeps
  *        its points off the tip and integrates the r^-1/2 of eq. 5's
- *        gradients; bent, crossing and grid-aligned cracks.
+ *        gradients; bent, crossing, grid-aligned and random cracks.
  */
 #include <float.h>
 #include <stdio.h>
@@ -532,6 +532,52 @@ static void crossing_and_grid_aligned_cracks(void **state)
     free(q);
 }
 
+/* -- random cracks ----------------------------------------------------------- */
+
+static void random_cracks_keep_the_area(void **state)
+{
+    (void)state;
+    /* polylines of 2-4 points, one or two cracks, half of them on a grid of
+     * 1/4 (points on the cell's edges and corners, segments along them),
+     * tips at random ends: every point finite, inside, of positive weight,
+     * and the weights sum to the cell's area */
+    QuadPoint *q = malloc(NPTS * sizeof *q);
+    srand(2024);
+    double worst = 0;
+    int most = 0;
+    for (int it = 0; it < 20000; it++) {
+        double xs[2][4], ys[2][4];
+        CrackLine c[2];
+        int nc = 1 + (it % 3 == 0);
+        for (int k = 0; k < nc; k++) {
+            int n = 2 + rand() % 3;
+            for (int i = 0; i < n; i++) {
+                double x = -1 + 3 * (rand() / (double)RAND_MAX);
+                double y = -1 + 3 * (rand() / (double)RAND_MAX);
+                xs[k][i] = it % 2 ? round(4 * x) / 4 : x;
+                ys[k][i] = it % 2 ? round(4 * y) / 4 : y;
+            }
+            c[k] = (CrackLine){n, xs[k], ys[k], {rand() % 2, rand() % 2}};
+        }
+        int n = 1 + rand() % 6;
+        int np = quad_cell(c, nc, 0, 0, 1, 1, n, q, NPTS);
+        assert_true(np >= n * n && np <= NPTS);
+        most = np > most ? np : most;
+        double a = 0;
+        for (int i = 0; i < np; i++) {
+            assert_true(q[i].x > 0 && q[i].x < 1 && q[i].y > 0 && q[i].y < 1);
+            assert_true(q[i].w > 0);
+            a += q[i].w;
+        }
+        if (!(fabs(a - 1) <= 1e-13))
+            fail_msg("case %d: the weights sum to %.17g", it, a);
+        worst = fmax(worst, fabs(a - 1));
+    }
+    printf("  20000 random cracks: largest area error %.1e, most points %d\n",
+           worst, most);
+    free(q);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -541,6 +587,7 @@ int main(void)
         cmocka_unit_test(tip_cell_points_avoid_the_tip),
         cmocka_unit_test(bent_crack_areas_per_side),
         cmocka_unit_test(crossing_and_grid_aligned_cracks),
+        cmocka_unit_test(random_cracks_keep_the_area),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
