@@ -15,6 +15,7 @@ typedef enum {
 /** Most branch functions of one tip. */
 #define BRANCH_MAX 4
 
+/// [branch_functions]
 /**
  * @brief The branch functions at (x, y) about the tip at @p tip with unit
  *        direction @p dir (crack_line_tip()), and their gradients in
@@ -39,5 +40,6 @@ typedef enum {
 int branch_functions(BranchKind kind, double m, const double tip[2],
                      const double dir[2], int side, double x, double y,
                      double *B, double *dBx, double *dBy);
+/// [branch_functions]
 
 #endif

@@ -5,6 +5,7 @@
 #ifndef MPM_MLS_H
 #define MPM_MLS_H
 
+/// [mls_shape]
 /**
  * @brief The MLS shape functions at (x, y) of @p n nodes (X[k], Y[k]) with
  *        support radii d[k], and their gradients.
@@ -14,6 +15,12 @@
  * shifted to (x, y) and scaled by the largest radius (xefg.md pitfall 1),
  * which leaves Phi unchanged and keeps A well conditioned far from the
  * origin.
+ * @param x     the place x
+ * @param y     the place y
+ * @param n     number of nodes
+ * @param X     node x (n values)
+ * @param Y     node y (n values)
+ * @param d     support radii (n values)
  * @param phi   n values (not NULL)
  * @param dphix n values of dPhi/dx (NULL: not wanted; then dphiy too)
  * @param dphiy n values of dPhi/dy
@@ -22,5 +29,6 @@
  */
 int mls_shape(double x, double y, int n, const double *X, const double *Y,
               const double *d, double *phi, double *dphix, double *dphiy);
+/// [mls_shape]
 
 #endif

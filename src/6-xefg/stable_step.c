@@ -12,8 +12,9 @@
 
 #include "xefg.h"
 
-/** Most iterations, and the relative change of omega^2 that ends them. */
+/** Most iterations. */
 #define POWER_MAX 300
+/** The relative change of omega^2 that ends them. */
 #define POWER_TOL 1e-6
 
 /// [xefg_power_iteration]
