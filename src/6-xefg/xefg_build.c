@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "cracks.h"
+#include "footprint.h"
 #include "quadrature.h"
 #include "xefg.h"
 
@@ -348,6 +349,31 @@ static int initial_state(Xefg *x, const Sim *sim)
     return 0;
 }
 
+/** Refuse a discretisation that would not fit in memory, before its rows
+ *  are built: each of the gauss^2 points of a node's cell keeps a row of
+ *  about pi (d/h)^2 nodes' parameters (value and gradient, 28 bytes each). */
+static int check_memory(const Xefg *x, const Sim *sim, char *err,
+                        size_t errlen)
+{
+    double a = x->set.support, g = x->set.gauss;
+    double per_node = (double)x->ndof / (x->nnode ? x->nnode : 1);
+    double entries = (double)x->nnode * g * g * (3.2 * a * a + 2.0) * per_node;
+    double bytes = entries * 28.0 + (double)x->nnode * g * g * 80.0;
+    double limit = sim->memory_limit ? (double)sim->memory_limit
+                                     : footprint_available();
+    if (bytes <= limit)
+        return 0;
+    char at[SCENE_AT_LEN];
+    snprintf(err, errlen, "%s: the XEFG discretisation needs about %.2g GB "
+             "(%d nodes, %.3g Gauss points, %.3g shape-function entries), more "
+             "than the %.2g GB available (--max-memory to change; or lower "
+             "xefg.gauss or xefg.support)",
+             x->set.line ? line_at(sim, x->set.line, at) : sim->scene.file,
+             bytes / 1e9, x->nnode, (double)x->nnode * g * g, entries,
+             limit / 1e9);
+    return -1;
+}
+
 /// [xefg_build]
 int xefg_build(Xefg *x, const Sim *sim, char *err, size_t errlen)
 {
@@ -356,7 +382,7 @@ int xefg_build(Xefg *x, const Sim *sim, char *err, size_t errlen)
     int rc = -1;
     if (crack_lines(x, sim) || nodes(x, sim) || parameters(x))
         goto oom;
-    if (cracks_in_bodies(x, sim, err, errlen))
+    if (cracks_in_bodies(x, sim, err, errlen) || check_memory(x, sim, err, errlen))
         return -1;
     for (int I = 0; I < x->nnode; I++)
         size = fmax(size, x->d[I]);

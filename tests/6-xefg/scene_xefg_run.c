@@ -76,6 +76,19 @@ static void past_the_stable_step_it_stops(void **state)
     tk_assert_outputs_whole(OUT "/unstable");
 }
 
+/** A discretisation that would not fit is refused before its rows are
+ *  built, with the estimate and the limit. */
+static void too_large_is_refused(void **state)
+{
+    (void)state;
+    int rc = tk_run_mpm("figures/fig1/dcb_full.cfg -q -o " OUT "/large "
+                        "run.method=xefg --max-memory 20", out, sizeof out);
+    if (rc != 1)
+        fail_msg("exit %d, expected 1: %s", rc, out);
+    assert_non_null(strstr(out, "the XEFG discretisation needs about"));
+    assert_non_null(strstr(out, "more than the 0.02 GB available"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -83,6 +96,7 @@ int main(void)
         cmocka_unit_test(stop_and_restart_gives_the_same_bytes),
         cmocka_unit_test(at_the_stable_step_it_runs),
         cmocka_unit_test(past_the_stable_step_it_stops),
+        cmocka_unit_test(too_large_is_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
