@@ -146,6 +146,14 @@ void xefg_strain_update(const Xefg *x, const Sim *sim, const double *du,
                         double *gs, double *ge);
 
 /**
+ * @brief xefg_strain_update() and then xefg_internal_force() of the new
+ *        stresses into @p f, in one pass over the Gauss points (each row
+ *        read once a step).
+ */
+void xefg_update_and_force(const Xefg *x, const Sim *sim, const double *du,
+                           double *f);
+
+/**
  * @brief The highest frequency of M^-1 K by power iteration (section 2.5)
  *        and the critical step 2 / omega_max. @return 0, or -1 when it did
  *        not give a finite positive frequency or memory ran out.
@@ -168,6 +176,9 @@ int xefg_step(Sim *sim);
 /** @brief The accelerations a = M^-1 (f_ext(@p t) - f_int) from the
  *         Gauss points' stresses (before damping), into Xefg::a. */
 void xefg_accelerations(Xefg *x, const Sim *sim, double t);
+
+/** @brief As xefg_accelerations() with f_int already in Xefg::a. */
+void xefg_accelerations_from(Xefg *x, const Sim *sim, double t);
 
 /** @brief The material points' positions, velocities, stresses and strains
  *         from the parameters (for outputs and history). */

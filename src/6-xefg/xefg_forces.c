@@ -54,6 +54,39 @@ void xefg_strain_update(const Xefg *x, const Sim *sim, const double *du,
 }
 /// [xefg_strain_update]
 
+/// [xefg_update_and_force]
+void xefg_update_and_force(const Xefg *x, const Sim *sim, const double *du,
+                           double *f)
+{
+    const ShapeRows *R = &x->gauss;
+    const Material *mats = sim->scene.mat;
+    const int *mat = sim->pts.mat;
+    memset(f, 0, 2 * sizeof(double) * (size_t)x->ndof);
+    for (int g = 0; g < x->ngauss; g++) {
+        double uxx = 0.0, uxy = 0.0, uyx = 0.0, uyy = 0.0;
+        for (int e = R->start[g]; e < R->start[g + 1]; e++) {
+            int q = R->dof[e];                       /* grad du = sum du B */
+            uxx += du[2 * q] * R->Nx[e];
+            uxy += du[2 * q] * R->Ny[e];
+            uyx += du[2 * q + 1] * R->Nx[e];
+            uyy += du[2 * q + 1] * R->Ny[e];
+        }
+        double dexy = 0.5 * (uxy + uyx), *s = x->gs + 3 * g, *e = x->ge + 3 * g;
+        const Material *m = &mats[mat[x->gnode[g]]];
+        m->law->stress(m, uxx, uyy, dexy, s);        /* sigma += C d eps */
+        e[0] += uxx;
+        e[1] += uyy;
+        e[2] += dexy;
+        double w = x->gw[g], sxx = w * s[0], syy = w * s[1], sxy = w * s[2];
+        for (int k = R->start[g]; k < R->start[g + 1]; k++) {
+            int q = R->dof[k];                       /* f_q = int B_q^T sigma */
+            f[2 * q] += sxx * R->Nx[k] + sxy * R->Ny[k];
+            f[2 * q + 1] += sxy * R->Nx[k] + syy * R->Ny[k];
+        }
+    }
+}
+/// [xefg_update_and_force]
+
 double xefg_kinetic_energy(const Xefg *x)
 {
     double k = 0.0;

@@ -56,8 +56,13 @@ static int check_finite(const Xefg *x, Sim *sim)
  *  damping, from the Gauss points' stresses now. */
 void xefg_accelerations(Xefg *x, const Sim *sim, double t)
 {
+    xefg_internal_force(x, x->gs, x->a);
+    xefg_accelerations_from(x, sim, t);
+}
+
+void xefg_accelerations_from(Xefg *x, const Sim *sim, double t)
+{
     double *a = x->a;
-    xefg_internal_force(x, x->gs, a);
     for (int k = 0; k < 2 * x->ndof; k++)
         a[k] = -a[k];
     external_force(x, sim, t, a);
@@ -97,8 +102,8 @@ int xefg_step(Sim *sim)
         du[k] = dt * v[k];
         x->u[k] += du[k];
     }
-    xefg_strain_update(x, sim, du, x->gs, x->ge);   /* sigma += C d eps */
-    xefg_accelerations(x, sim, sim->t + dt);        /* a(t + dt) */
+    xefg_update_and_force(x, sim, du, a);           /* sigma, f_int */
+    xefg_accelerations_from(x, sim, sim->t + dt);   /* a(t + dt) */
     for (int k = 0; k < n2; k++)                    /* v(t + dt) */
         v[k] += 0.5 * dt * (a[k] - kappa * v[k]);
     xefg_constraints_apply(x, sim->t + dt);
