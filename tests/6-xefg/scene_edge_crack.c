@@ -12,8 +12,8 @@
  * Pass (xefg.md Test 3): K_I / (sigma sqrt(pi a)) within 3 % of F(0.45)
  * at the finest of three spacings (and here at each), the error falling
  * over the three (see below for how), |K_II / K_I| <= 1 %, each static
- * state reached with kinetic / strain energy <= 1e-6 (the spec's 1e-4 is
- * too early, see STOP).
+ * state reached with kinetic / strain energy <= 1e-6 and 15 / omega_1
+ * settled (the spec's 1e-4 alone comes too early, see STOP).
  *
  * Environment: XEFG_K_SPACINGS, the three divisions W / h (default
  * "10 20 40"; make fig-xefg-k runs "20 40 80"); XEFG_K_TABLE, a file for
@@ -37,11 +37,14 @@
  * strongest frequency of K_I(t) in an undamped run at W/10 (the next is
  * 139 /ms) */
 #define DAMPING 100.0
-/* kinetic / strain energy that ends the damped run. xefg.md asks <= 1e-4,
- * but there K_I is still 1.5 to 4 % low (the displacement lags by about
- * the square root of the ratio); at 1e-6 it is within 0.05 % of its value
- * at 1e-7 */
+/* the damped run ends at kinetic / strain energy <= STOP, not before
+ * SETTLE. xefg.md asks KE/SE <= 1e-4, but there K_I is still 1.5 to 4 %
+ * low: for a critically damped mode the ratio falls to 1e-4 at omega_1 t
+ * = 7 and 1e-6 at 9.5, when the displacement still lags by 0.7 % and
+ * 0.1 %; on the fine spacings the lowest mode is all that is left then.
+ * At omega_1 t = 15 it lags by 5e-6. */
 #define STOP 1e-6
+#define SETTLE (15.0 / (0.5 * DAMPING))
 /* q = 1 within r_d of the tip, 0 beyond 2 r_d: a fixed ring, 1.5 to 3 mm
  * (1.5 to 3 spacings at W/10), clear of the edges (4.5 mm) */
 #define RD 1.5
@@ -106,7 +109,7 @@ static Result edge_crack(int n)
     while (s->step < 1000000) {
         assert_int_equal(sim_advance(s), 0);
         double ke = xefg_kinetic_energy(x), se = xefg_strain_energy(x, s);
-        if (se > 0 && ke <= STOP * se) {
+        if (s->t >= SETTLE && se > 0 && ke <= STOP * se) {
             R.ratio = ke / se;
             break;
         }
