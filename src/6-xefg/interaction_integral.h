@@ -21,8 +21,11 @@
  * Stresses and displacements as in Anderson, Fracture Mechanics (3rd ed.),
  * chapter 2: sigma = g(theta) / sqrt(2 pi r), u = sqrt(r / (2 pi))
  * f(theta) / (2 mu); the gradients by the chain rule in (r, theta).
+ * @param mode   1 (mode I) or 2 (mode II)
  * @param mu     shear modulus
  * @param kappa  3 - 4 nu (plane strain) or (3 - nu) / (1 + nu) (plane stress)
+ * @param r      distance from the tip, > 0
+ * @param theta  angle from the x1 axis
  * @param s      stress 11, 22, 12 (may be NULL)
  * @param u      displacement 1, 2 (may be NULL)
  * @param du     gradient du[2 i + j] = d u_i / d x_j (may be NULL)
@@ -49,6 +52,9 @@ void williams_field(int mode, double mu, double kappa, double r, double theta,
  * the ring between contributes, away from the singular tip; the ring must lie
  * in one material, hold no other crack and keep off the body's boundary,
  * and the crack must be straight across it.
+ * @param sim    a simulation of run.method = "xefg" (a linear elastic body)
+ * @param crack  the crack (stage 2's order)
+ * @param end    its end: 0 (first point) or 1 (last point)
  * @param radius r_d (mm), a few node spacings
  * @param K      K_I and K_II (MPa sqrt(mm))
  * @return 0; -1 when the method is not xefg, the end is not a tip, radius

@@ -180,6 +180,7 @@ static void stress_intensity_of_an_edge_crack(void **state)
     printf("  changes between spacings %+.5f, %+.5f; Aitken limit F = %.5f "
            "(%+.2f %% of the handbook); the handbook error %s\n", d1, d2, limit,
            100 * (limit / F - 1.0), falls ? "falls" : "does not fall monotonically");
+    fflush(stdout);
     if (f) {
         fprintf(f, "# Aitken limit %.6f (%+.3f %% of the handbook)\n", limit,
                 100 * (limit / F - 1.0));
