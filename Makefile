@@ -255,6 +255,8 @@ FIG_USES_fig-tip := $(wildcard tests/3-crossing/scenes/tip_*.cfg)
 FIG_OUT_fig-tradeoff := fig-tradeoff-beam.png fig-tradeoff-dcb.png
 FIG_RUN_fig-tradeoff := build/stage5/mpm build/stage5/libmpm.a build/stage5/tests/support/q4.o
 FIG_USES_fig-tradeoff := figures/fig6/beam_supports.cfg figures/fig1/dcb_full.cfg tests/support/q4.h
+FIG_OUT_fig-xefg-k := fig-xefg-k.png fig-xefg-k.txt
+FIG_RUN_fig-xefg-k := build/stage6/tests/6-xefg/scene_edge_crack
 
 FIGURES := $(notdir $(wildcard figures/fig*))
 define FIGURE_RULES
