@@ -10,8 +10,10 @@
  *        K_I = F(a/W) sigma sqrt(pi a) (Tada / Brown-Srawley, xefg.md 3.2).
  *
  * Pass (xefg.md Test 3): K_I / (sigma sqrt(pi a)) within 3 % of F(0.45)
- * at the finest of three spacings (and here at each), the error falling
- * over the three (see below for how), |K_II / K_I| <= 1 %, each static
+ * at the finest of three spacings (and here at each), converging
+ * monotonically: the three values move the same way by shrinking steps
+ * (their limit lies 0.3 % above F, inside the handbook's own 0.5 %, so the
+ * error against F itself need not fall), |K_II / K_I| <= 1 %, each static
  * state reached with kinetic / strain energy <= 1e-6 and 15 / omega_1
  * settled (the spec's 1e-4 alone comes too early, see STOP).
  *
@@ -193,7 +195,7 @@ static void stress_intensity_of_an_edge_crack(void **state)
         assert_true(fabs(R[k].F / F - 1.0) <= 0.03);          /* 3 % */
         assert_true(fabs(R[k].KII) <= 0.01);                  /* mode I */
     }
-    assert_true(fabs(d2) < fabs(d1));                         /* converges */
+    assert_true(d1 * d2 > 0.0 && fabs(d2) < fabs(d1));      /* monotone */
 }
 
 int main(void)
