@@ -255,6 +255,10 @@ FIG_USES_fig-tip := $(wildcard tests/3-crossing/scenes/tip_*.cfg)
 FIG_OUT_fig-tradeoff := fig-tradeoff-beam.png fig-tradeoff-dcb.png
 FIG_RUN_fig-tradeoff := build/stage5/mpm build/stage5/libmpm.a build/stage5/tests/support/q4.o
 FIG_USES_fig-tradeoff := figures/fig6/beam_supports.cfg figures/fig1/dcb_full.cfg tests/support/q4.h
+FIG_OUT_fig-xefg-dcb := fig-xefg-dcb.png fig-xefg-dcb.txt
+FIG_RUN_fig-xefg-dcb := build/stage6/mpm build/stage6/libmpm.a build/stage6/tests/support/q4.o
+FIG_USES_fig-xefg-dcb := figures/fig1/dcb_full.cfg tests/support/q4.h \
+    $(addprefix figures/fig-tradeoff/,dcb_opening.c dcb_scene.sh)
 
 FIGURES := $(notdir $(wildcard figures/fig*))
 define FIGURE_RULES
