@@ -33,17 +33,29 @@
 # Writes build/figures/fig-xefg-dcb.png (error against cost, log-log: the
 # opening and G, one curve per method, points labelled with h) and
 # build/figures/fig-xefg-dcb.txt (every number of the figure and more);
-# runs under build/fig-xefg-dcb/.  About 12 minutes on one core, nine tenths
-# of it XEFG.
+# runs under build/fig-xefg-dcb/.  About 10 minutes on a loaded machine,
+# nine tenths of it XEFG.
 #
-# Environment: MPM (default build/stage6/mpm), METHODS (default "mpm xefg"),
-# GRIDS ("N:h ...", default "35:3 51:2 85:1.2"), FEA_H (coarsest FEA mesh,
-# mm; default 1), XDCB_RUNS (the runs' folder), XDCB_TXT (the table), PLOT=0
-# (no figure): tools/bench_xefg_dcb.sh runs a subset so.
+# The load: the scene's 1 mN opens the mouth by about 3.2 mm, so that the
+# points near the loaded end move more than a cell (1.6 mm each arm; cells
+# of 3 to 1.2 mm).  CRAMP follows its points (updated positions; linear
+# shape functions pay for each cell line crossed, chapter 1's scene_dcb),
+# while the Q4 FEA and XEFG (total Lagrangian, small strain) solve the
+# linear problem.  So the figure has a third series, CRAMP at a tenth of
+# the load (mpm:0.1), where the points move a tenth as far: the errors are
+# relative, so the FEA's are the same at any load, and XEFG's too (it is
+# linear: its errors at 0.1 mN are those at 1 mN to the digits printed).
+#
+# Environment: MPM (default build/stage6/mpm), SERIES (default "mpm xefg
+# mpm:0.1": the method, and after a colon each arm's load in mN when not
+# the scene's 1), GRIDS ("N:h ...", default "35:3 51:2 85:1.2"), FEA_H
+# (coarsest FEA mesh, mm; default 1), XDCB_RUNS (the runs' folder),
+# XDCB_TXT (the table), PLOT=0 (no figure): tools/bench_xefg_dcb.sh runs a
+# subset so.
 set -u
 cd "$(dirname "$0")/../.."
 MPM=${MPM:-build/stage6/mpm}
-METHODS=${METHODS:-"mpm xefg"}
+SERIES=${SERIES:-"mpm xefg mpm:0.1"}
 GRIDS=${GRIDS:-"35:3 51:2 85:1.2"}
 FEA_H=${FEA_H:-1}
 OUT=build/figures
@@ -85,37 +97,44 @@ for spec in $GRIDS; do
     done
 done
 
-# results.csv, one row per method and grid:
-#   method,h,N,points,steps,loop,loop3,open,open_fea,open_err,G,G_fea,G_err
+# results.csv, one row per series and grid:
+#   series,method,load,h,N,points,steps,loop,loop3,open,open_fea,open_err,G,G_fea,G_err
 res=$RUNS/results.csv
-echo "method,h,N,points,steps,loop,loop3,open,open_fea,open_err,G,G_fea,G_err" >"$res"
-n=0 total=$(( $(wc -w <<<"$METHODS") * $(wc -w <<<"$GRIDS") * 3 ))
-for m in $METHODS; do
+echo "series,method,load,h,N,points,steps,loop,loop3,open,open_fea,open_err,G,G_fea,G_err" >"$res"
+n=0 total=$(( $(wc -w <<<"$SERIES") * $(wc -w <<<"$GRIDS") * 3 ))
+for series in $SERIES; do
+    IFS=: read -r m mN <<<"$series"
+    # the load, when not the scene's: the same overrides for the runs and the FEA
+    load=()
+    if [ -n "$mN" ]; then
+        f=$(awk -v l="$mN" 'BEGIN { printf "%.17g", l / 1000 }')
+        load=("loads.[0].force=[0.0, $f]" "loads.[1].force=[0.0, -$f]")
+    fi
     for spec in $GRIDS; do
         IFS=: read -r N h <<<"$spec"
         loop3=0
         for K in -1 0 1; do
             n=$((n + 1))
             scene=$RUNS/dcb_${N}_$K.cfg
-            dir=$RUNS/$m-$N-$K
-            run "$dir" "$scene" run.method="$m"
+            dir=$RUNS/$m${mN:+-$mN}-$N-$K
+            run "$dir" "$scene" run.method="$m" ${load[@]+"${load[@]}"}
             loop3=$(awk -v a="$loop3" -v b="$loop" 'BEGIN { print a + b }')
             # pts x0 y0 open f0 f1 f2 order open_fea err tip P B delta d0 d1 d2 dorder delta_fea
             read -r pts x0 y0 om f0 f1 f2 order ref err tip P B dl dl0 dl1 dl2 dorder dref \
-                < <("$FEA" -g "$scene" "$dir" "$FEA_H") || exit 1
-            echo "fig-xefg-dcb: $n/$total: $m h=$h tip $tip: opening $om (FEA $ref)," \
+                < <("$FEA" -g "$scene" "$dir" "$FEA_H" ${load[@]+"${load[@]}"}) || exit 1
+            echo "fig-xefg-dcb: $n/$total: $series h=$h tip $tip: opening $om (FEA $ref)," \
                  "load line $dl (FEA $dref), loop $loop s"
             case $K in
                 -1) tipm=$tip dlm=$dl drefm=$dref ;;
                 0)  pts0=$pts steps0=$steps loop0=$loop om0=$om ref0=$ref err0=$err ;;
                 1)  # G = P^2/(2B) dC/da, C = Delta/P: P/(2B) dDelta/da
-                    awk -v m="$m" -v h="$h" -v N="$N" -v pts="$pts0" -v steps="$steps0" \
+                    awk -v s="$series" -v m="$m" -v mN="${mN:-1}" -v h="$h" -v N="$N" -v pts="$pts0" -v steps="$steps0" \
                         -v loop="$loop0" -v loop3="$loop3" -v om="$om0" -v ref="$ref0" \
                         -v err="$err0" -v P="$P" -v B="$B" -v am="$tipm" -v ap="$tip" \
                         -v dm="$dlm" -v dp="$dl" -v fm="$drefm" -v fp="$dref" 'BEGIN {
                         G = P / (2 * B) * (dp - dm) / (ap - am)
                         Gf = P / (2 * B) * (fp - fm) / (ap - am)
-                        printf "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%.6e,%.6e,%.6e\n", m, h, N, pts,
+                        printf "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%.6e,%.6e,%.6e\n", s, m, mN, h, N, pts,
                             steps, loop, loop3, om, ref, err, G, Gf, G / Gf - 1 }' >>"$res" ;;
             esac
         done
@@ -130,16 +149,17 @@ done
     echo "(support 2, gauss 4, cohesive tip, m = 1).  FEA: Q4 of the same loads,"
     echo "meshes $FEA_H, $(awk -v h="$FEA_H" 'BEGIN { print h / 2 ", " h / 4 }') mm (columns put a node on the tip), extrapolated."
     echo "opening: the crack mouth at the load (mm), the run with a0 = 50 mm;"
-    echo "G = P^2/(2B) dC/da (N/mm = mJ/mm^2), C = load-line opening / P, P = 1 mN,"
+    echo "G = P^2/(2B) dC/da (N/mm = mJ/mm^2), C = load-line opening / P, P = each"
+    echo "arm's load (mN column; the scene's 1 mN, a tenth of it for the linear range),"
     echo "B = 1 mm, central difference over a0 -/+ dx (the FEA's the same way);"
     echo "loop s: the time loop of the run at a0 (the figure's cost); 3 runs: of all"
     echo "three (G's cost); rate: particle-steps/s of the run at a0.  CPU:"
     echo "$(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo), one run at a time."
     echo
-    printf '%-6s %4s %7s %6s %6s %8s %8s %9s %9s %8s %11s %11s %8s %9s\n' method h dx points steps \
-        "loop s" "3 runs" "open mm" "FEA mm" "open %" "G" "G FEA" "G %" rate
-    awk -F, 'NR > 1 { printf "%-6s %4s %7s %6s %6s %8.3f %8.3f %9.5f %9.5f %+8.3f %11.5e %11.5e %+8.3f %9.3g\n",
-        $1, $2, "100/" $3, $4, $5, $6, $7, $8, $9, 100 * $10, $11, $12, 100 * $13, $4 * $5 / $6 }' "$res"
+    printf '%-6s %3s %4s %7s %6s %6s %8s %8s %9s %9s %8s %11s %11s %8s %9s\n' method mN h dx \
+        points steps "loop s" "3 runs" "open mm" "FEA mm" "open %" "G" "G FEA" "G %" rate
+    awk -F, 'NR > 1 { printf "%-6s %3s %4s %7s %6s %6s %8.3f %8.3f %9.5f %9.5f %+8.3f %11.5e %11.5e %+8.3f %9.3g\n",
+        $2, $3, $4, "100/" $5, $6, $7, $8, $9, $10, $11, 100 * $12, $13, $14, 100 * $15, $6 * $7 / $8 }' "$res"
     echo
     echo "load average before the runs: $load0; after: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)"
 } >"$txt"
@@ -147,14 +167,14 @@ cat "$txt"
 [ "${PLOT:-1}" = 0 ] && exit 0
 
 # plot.csv: the labels of the two panels (h and the signed error), loop s,
-# |opening error|, |G error|; one block per method, in METHODS' order, two
+# |opening error|, |G error|; one block per series, in SERIES' order, two
 # blank lines apart (gnuplot's index)
-for m in $METHODS; do
-    awk -F, -v m="$m" '$1 == m { printf "h=%s (%+.2f %%),h=%s (%+.2f %%),%s,%.6e,%.6e\n",
-        $2, 100 * $10, $2, 100 * $13, $6, $10 < 0 ? -$10 : $10, $13 < 0 ? -$13 : $13 }' "$res"
+for series in $SERIES; do
+    awk -F, -v s="$series" '$1 == s { printf "h=%s (%+.2f %%),h=%s (%+.2f %%),%s,%.6e,%.6e\n",
+        $4, 100 * $12, $4, 100 * $15, $8, $12 < 0 ? -$12 : $12, $15 < 0 ? -$15 : $15 }' "$res"
     printf '\n\n'
 done >"$RUNS/plot.csv"
 command -v gnuplot >/dev/null 2>&1 || { echo "fig-xefg-dcb: no gnuplot; $txt written" >&2; exit 1; }
-gnuplot -e "data='$RUNS/plot.csv'; out='$OUT/fig-xefg-dcb.png'; methods='$METHODS'" \
+gnuplot -e "data='$RUNS/plot.csv'; out='$OUT/fig-xefg-dcb.png'; series='$SERIES'" \
     figures/fig-xefg-dcb/plot.gp || exit 1
 echo "fig-xefg-dcb: $OUT/fig-xefg-dcb.png, $txt"
