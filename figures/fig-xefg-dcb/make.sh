@@ -170,7 +170,7 @@ cat "$txt"
 # |opening error|, |G error|; one block per series, in SERIES' order, two
 # blank lines apart (gnuplot's index)
 for series in $SERIES; do
-    awk -F, -v s="$series" '$1 == s { printf "h=%s (%+.2f %%),h=%s (%+.2f %%),%s,%.6e,%.6e\n",
+    awk -F, -v s="$series" '$1 == s { printf "h=%s (%+.3f %%),h=%s (%+.3f %%),%s,%.6e,%.6e\n",
         $4, 100 * $12, $4, 100 * $15, $8, $12 < 0 ? -$12 : $12, $15 < 0 ? -$15 : $15 }' "$res"
     printf '\n\n'
 done >"$RUNS/plot.csv"

@@ -16,14 +16,15 @@ name(w) = strstrt(w, ':') ? w[1:strstrt(w, ':') - 1] : w
 title(w) = (name(w) eq 'mpm' ? 'CRAMP (mpm, musl)' : (name(w) eq 'xefg' ? 'XEFG (default settings)' : name(w))) . load(w)
 dash(w) = strstrt(w, ':') ? 2 : 1              # another load: dashed,
 colour(w) = name(w) eq 'xefg' ? 2 : 1           # the method's colour,
-up(w) = strstrt(w, ':') ? -0.7 : 0.6            # labels below the points
+up(w) = name(w) eq 'mpm' && !strstrt(w, ':') ? 0.6 : -0.7   # labels above
+                                                # CRAMP at 1 mN, below the others
 set logscale xy
 set format y '%g'
 set ytics add (0.1, 0.2, 0.3, 0.5, 0.7, 1, 1.5, 2, 3, 4, 5, 7, 10)
 set autoscale fix
-set offsets graph 0.06, graph 0.22, graph 0.15, graph 0.15
+set offsets graph 0.06, graph 0.3, graph 0.15, graph 0.15
 set xlabel 'cost: wall time of the time loop of one run (s); G takes three runs'
-set key top right box opaque
+set key bottom left box opaque
 set grid
 set multiplot layout 1, 2 title \
     'DCB (figures/fig1/dcb_full.cfg, 2 x 2 points per cell, static): error from the converged Q4 FEA against cost' \
