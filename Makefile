@@ -257,6 +257,10 @@ FIG_RUN_fig-tradeoff := build/stage5/mpm build/stage5/libmpm.a build/stage5/test
 FIG_USES_fig-tradeoff := figures/fig6/beam_supports.cfg figures/fig1/dcb_full.cfg tests/support/q4.h
 FIG_OUT_fig-xefg-k := fig-xefg-k.png fig-xefg-k.txt
 FIG_RUN_fig-xefg-k := build/stage6/tests/6-xefg/scene_edge_crack
+FIG_OUT_fig-xefg-dcb := fig-xefg-dcb.png fig-xefg-dcb.txt
+FIG_RUN_fig-xefg-dcb := build/stage6/mpm build/stage6/libmpm.a build/stage6/tests/support/q4.o
+FIG_USES_fig-xefg-dcb := figures/fig1/dcb_full.cfg tests/support/q4.h \
+    $(addprefix figures/fig-tradeoff/,dcb_opening.c dcb_scene.sh)
 
 FIGURES := $(notdir $(wildcard figures/fig*))
 define FIGURE_RULES

@@ -2,7 +2,8 @@
 # make bench: speed and memory of the stage-1 solver on one thread, what a
 # crack costs (stage 2), what the crossing step costs by search (stage 3)
 # and what contact costs (stage 4: crack faces; bodies through contact groups);
-# at the end, error against cost (stage 5, a subset of make fig-tradeoff).
+# error against cost (stage 5, a subset of make fig-tradeoff) and, at the
+# end, CRAMP against XEFG on the DCB (stage 6, tools/bench_xefg_dcb.sh).
 #
 # Speed: particle-steps per second on the two Sulsky disks refined to about
 # 50,000 and 200,000 points (tools/bench/disks_*.cfg).  Each case runs N
@@ -347,4 +348,12 @@ if [ -x "$S5" ]; then
     else
         echo "  failed:"; tail -5 "$WORK/tradeoff.log" | sed 's/^/  /'
     fi
+fi
+
+# ---- stage 6: CRAMP against XEFG on the DCB ------------------------------------
+# A subset of make fig-xefg-dcb: tools/bench_xefg_dcb.sh (it runs alone too).
+S6=build/stage6/mpm
+if [ -x "$S6" ]; then
+    echo
+    MPM=$S6 WORK="$WORK" bash tools/bench_xefg_dcb.sh
 fi

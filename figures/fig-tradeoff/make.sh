@@ -108,20 +108,10 @@ done
 pareto <"$beam" >"$RUNS/beam-front.csv"
 
 # ---- (b) DCB ------------------------------------------------------------------
-# dcb_scene N DY: dcb_full.cfg on a grid of dx = 100/N, dy, 4 mm margins
-dcb_scene() {
-    awk -v N="$1" -v dy="$2" '
-        function f(v,  s) { s = sprintf("%.17g", v); return (s ~ /[.e]/) ? s : s ".0" }
-        BEGIN { dx = 100 / N; nl = int(4 / dx); if (nl * dx < 4) nl++
-                print "# written by figures/fig-tradeoff/make.sh: figures/fig1/dcb_full.cfg," 
-                printf "# dx = 100/%d, dy = %s, tip mid-cell, crack from one cell left\n", N, dy }
-        /^grid = / { g = 1 }
-        g { if (/}; *$/) { printf "grid = { origin = [%s, -24.0]; cells = [%d, %d];\n", f(-nl * dx), N + 2 * nl, 48 / dy
-                           printf "         cell_size = [%s, %s]; };\n", f(dx), f(dy); g = 0 }
-            next }
-        /^cracks = / { printf "cracks = ( { points = ( [%s, 0.0], [50.0, 0.0] ); } );\n", f(-dx); next }
-        { print }' figures/fig1/dcb_full.cfg
-}
+# dcb_scene N DY: dcb_full.cfg on a grid of dx = 100/N, dy, 4 mm margins,
+# the tip mid-cell (figures/fig-tradeoff/dcb_scene.sh, shared with
+# make fig-xefg-dcb)
+dcb_scene() { bash figures/fig-tradeoff/dcb_scene.sh "$1" "$2"; }
 
 dcb=$RUNS/dcb.csv
 : >"$dcb"
