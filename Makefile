@@ -260,7 +260,7 @@ FIG_RUN_fig-xefg-k := build/stage6/tests/6-xefg/scene_edge_crack
 FIG_OUT_fig-xefg-dcb := fig-xefg-dcb.png fig-xefg-dcb.txt
 FIG_RUN_fig-xefg-dcb := build/stage6/mpm build/stage6/libmpm.a build/stage6/tests/support/q4.o
 FIG_USES_fig-xefg-dcb := figures/fig1/dcb_full.cfg tests/support/q4.h \
-    $(addprefix figures/fig-tradeoff/,dcb_opening.c dcb_scene.sh)
+    $(addprefix figures/fig-tradeoff/,dcb_opening.c dcb_opening.sh dcb_scene.sh)
 
 FIGURES := $(notdir $(wildcard figures/fig*))
 define FIGURE_RULES

@@ -50,11 +50,7 @@ load0=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
 [ "$MPM" = build/stage5/mpm ] && make --no-print-directory build/stage5/mpm >/dev/null
 [ -x "$MPM" ] || { echo "fig-tradeoff: $MPM not built" >&2; exit 1; }
 # the FEA links the stage's library and the tests' Q4 solver
-make --no-print-directory build/stage5/libmpm.a build/stage5/tests/support/q4.o >/dev/null || exit 1
-cc -std=c11 -Wall -Wextra -Werror -Wshadow -Wmissing-prototypes -Wundef \
-    -D_POSIX_C_SOURCE=200809L -O2 $(printf -- '-I%s ' src/[1-5]-*) -Itests/support \
-    figures/fig-tradeoff/dcb_opening.c build/stage5/tests/support/q4.o \
-    build/stage5/libmpm.a -llapacke -lconfig -lm -o "$FEA" || exit 1
+bash figures/fig-tradeoff/dcb_opening.sh 5 "$FEA" || exit 1
 
 # run DIR SCENE [overrides...]: one run; sets rc, loop (s), steps, why
 run() {

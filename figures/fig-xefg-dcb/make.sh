@@ -69,11 +69,7 @@ load0=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
 [ -x "$MPM" ] || { echo "fig-xefg-dcb: $MPM not built" >&2; exit 1; }
 # the measure (fig-tradeoff's, with -g) links stage 6's library (XEFG's
 # scenes load there) and the tests' Q4 solver
-make --no-print-directory build/stage6/libmpm.a build/stage6/tests/support/q4.o >/dev/null || exit 1
-cc -std=c11 -Wall -Wextra -Werror -Wshadow -Wmissing-prototypes -Wundef \
-    -D_POSIX_C_SOURCE=200809L -O2 $(printf -- '-I%s ' src/[1-6]-*) -Itests/support \
-    figures/fig-tradeoff/dcb_opening.c build/stage6/tests/support/q4.o \
-    build/stage6/libmpm.a -llapacke -lconfig -lm -o "$FEA" || exit 1
+bash figures/fig-tradeoff/dcb_opening.sh 6 "$FEA" || exit 1
 
 # run DIR SCENE [overrides...]: one run; sets loop (s) and steps, or fails
 run() {

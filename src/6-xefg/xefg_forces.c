@@ -8,81 +8,69 @@
 
 #include "xefg.h"
 
-/// [xefg_internal_force]
-void xefg_internal_force(const Xefg *x, const double *gs, double *f)
+/// [xefg_gauss_point]
+/** Gauss point @p g: its strain increment from the parameters' increments
+ *  @p du, grad du = sum du_q B_q, and its stress by its material's law
+ *  (small strain, eq. 36 of chapter 1); the strain added to @p e (NULL:
+ *  not kept). */
+static void gauss_update(const Xefg *x, const Sim *sim, int g,
+                         const double *du, double *s, double *e)
 {
     const ShapeRows *R = &x->gauss;
-    memset(f, 0, 2 * sizeof(double) * (size_t)x->ndof);
-    for (int g = 0; g < x->ngauss; g++) {
-        double w = x->gw[g];
-        double sxx = w * gs[3 * g], syy = w * gs[3 * g + 1],
-               sxy = w * gs[3 * g + 2];
-        for (int e = R->start[g]; e < R->start[g + 1]; e++) {
-            int q = R->dof[e];                       /* f_q = int B_q^T sigma */
-            f[2 * q] += sxx * R->Nx[e] + sxy * R->Ny[e];
-            f[2 * q + 1] += sxy * R->Nx[e] + syy * R->Ny[e];
-        }
+    double uxx = 0.0, uxy = 0.0, uyx = 0.0, uyy = 0.0;
+    for (int k = R->start[g]; k < R->start[g + 1]; k++) {
+        int q = R->dof[k];
+        uxx += du[2 * q] * R->Nx[k];
+        uxy += du[2 * q] * R->Ny[k];
+        uyx += du[2 * q + 1] * R->Nx[k];
+        uyy += du[2 * q + 1] * R->Ny[k];
+    }
+    double dexy = 0.5 * (uxy + uyx);
+    const Material *m = &sim->scene.mat[sim->pts.mat[x->gnode[g]]];
+    m->law->stress(m, uxx, uyy, dexy, s);
+    if (e) {
+        e[0] += uxx;
+        e[1] += uyy;
+        e[2] += dexy;
     }
 }
-/// [xefg_internal_force]
 
-/// [xefg_strain_update]
+/** Gauss point @p g's share of the internal forces, f_q += w B_q^T sigma
+ *  (eq. 30). */
+static void gauss_scatter(const ShapeRows *R, int g, double w,
+                          const double *s, double *f)
+{
+    double sxx = w * s[0], syy = w * s[1], sxy = w * s[2];
+    for (int k = R->start[g]; k < R->start[g + 1]; k++) {
+        int q = R->dof[k];
+        f[2 * q] += sxx * R->Nx[k] + sxy * R->Ny[k];
+        f[2 * q + 1] += sxy * R->Nx[k] + syy * R->Ny[k];
+    }
+}
+/// [xefg_gauss_point]
+
+void xefg_internal_force(const Xefg *x, const double *gs, double *f)
+{
+    memset(f, 0, 2 * sizeof(double) * (size_t)x->ndof);
+    for (int g = 0; g < x->ngauss; g++)
+        gauss_scatter(&x->gauss, g, x->gw[g], gs + 3 * g, f);
+}
+
 void xefg_strain_update(const Xefg *x, const Sim *sim, const double *du,
                         double *gs, double *ge)
 {
-    const ShapeRows *R = &x->gauss;
-    const Material *mats = sim->scene.mat;
-    const int *mat = sim->pts.mat;
-    for (int g = 0; g < x->ngauss; g++) {
-        double uxx = 0.0, uxy = 0.0, uyx = 0.0, uyy = 0.0;
-        for (int e = R->start[g]; e < R->start[g + 1]; e++) {
-            int q = R->dof[e];                       /* grad du = sum du B */
-            uxx += du[2 * q] * R->Nx[e];
-            uxy += du[2 * q] * R->Ny[e];
-            uyx += du[2 * q + 1] * R->Nx[e];
-            uyy += du[2 * q + 1] * R->Ny[e];
-        }
-        double dexy = 0.5 * (uxy + uyx);
-        const Material *m = &mats[mat[x->gnode[g]]];
-        m->law->stress(m, uxx, uyy, dexy, gs + 3 * g);
-        if (ge) {
-            ge[3 * g] += uxx;
-            ge[3 * g + 1] += uyy;
-            ge[3 * g + 2] += dexy;
-        }
-    }
+    for (int g = 0; g < x->ngauss; g++)
+        gauss_update(x, sim, g, du, gs + 3 * g, ge ? ge + 3 * g : NULL);
 }
-/// [xefg_strain_update]
 
 /// [xefg_update_and_force]
 void xefg_update_and_force(const Xefg *x, const Sim *sim, const double *du,
                            double *f)
 {
-    const ShapeRows *R = &x->gauss;
-    const Material *mats = sim->scene.mat;
-    const int *mat = sim->pts.mat;
     memset(f, 0, 2 * sizeof(double) * (size_t)x->ndof);
     for (int g = 0; g < x->ngauss; g++) {
-        double uxx = 0.0, uxy = 0.0, uyx = 0.0, uyy = 0.0;
-        for (int e = R->start[g]; e < R->start[g + 1]; e++) {
-            int q = R->dof[e];                       /* grad du = sum du B */
-            uxx += du[2 * q] * R->Nx[e];
-            uxy += du[2 * q] * R->Ny[e];
-            uyx += du[2 * q + 1] * R->Nx[e];
-            uyy += du[2 * q + 1] * R->Ny[e];
-        }
-        double dexy = 0.5 * (uxy + uyx), *s = x->gs + 3 * g, *e = x->ge + 3 * g;
-        const Material *m = &mats[mat[x->gnode[g]]];
-        m->law->stress(m, uxx, uyy, dexy, s);        /* sigma += C d eps */
-        e[0] += uxx;
-        e[1] += uyy;
-        e[2] += dexy;
-        double w = x->gw[g], sxx = w * s[0], syy = w * s[1], sxy = w * s[2];
-        for (int k = R->start[g]; k < R->start[g + 1]; k++) {
-            int q = R->dof[k];                       /* f_q = int B_q^T sigma */
-            f[2 * q] += sxx * R->Nx[k] + sxy * R->Ny[k];
-            f[2 * q + 1] += sxy * R->Nx[k] + syy * R->Ny[k];
-        }
+        gauss_update(x, sim, g, du, x->gs + 3 * g, x->ge + 3 * g);
+        gauss_scatter(&x->gauss, g, x->gw[g], x->gs + 3 * g, f);
     }
 }
 /// [xefg_update_and_force]
