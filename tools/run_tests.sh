@@ -12,13 +12,16 @@
 #   build/test-restart, and the same test runs once per stage, so two of them
 #   at once would overwrite each other's files.  Each program therefore runs
 #   in a folder of its own, build/test-run/N (N: its place in the list),
-#   which looks like the repository: a symbolic link to every top-level entry
-#   (tests, figures, tools, src, ...) and a real folder build/ holding links
-#   to the entries of the real build/ (stage1, asan, exercises, ...) but not
-#   to its test-* folders.  What a test reads (tests/..., build/stage2/mpm)
-#   is found through the links; what it writes under build/ lands in its own
-#   folder.  The program and MPM_BIN are relative paths such as
-#   build/stage3/mpm, which mean the same there as in the repository.
+#   which looks like the repository: its folders (tests, figures, tools,
+#   src, ...) copied as folders whose files are symbolic links to the
+#   repository's (cp -rs), and a real folder build/ holding links to the
+#   entries of the real build/ (stage1, asan, exercises, ...) but not to its
+#   test-* folders.  What a test reads (tests/..., build/stage2/mpm) is found
+#   through the links; what it writes under build/ lands in its own folder.
+#   The program and MPM_BIN are relative paths such as build/stage3/mpm,
+#   which mean the same there as in the repository.  (The folders are real
+#   folders, not links, because `find .` does not enter a linked folder:
+#   scene_same_numbers lists the repository's scenes that way.)
 #   A program that passed has its folder removed; a failed one's is kept for
 #   a look at what it wrote (build/test-run/ is emptied at the next run).
 # * The ?PROGRAM entries run make (in the repository, as before).  They wait
@@ -65,8 +68,11 @@ done
 make_folder() {
   local dir=$1 entry
   mkdir -p "$dir/build"
-  for entry in "$root"/*; do                     # tests, src, figures, ...
-    [ "${entry##*/}" = build ] || ln -s "$entry" "$dir/"
+  for entry in "$root"/*; do                     # tests, src, Makefile, ...
+    case ${entry##*/} in
+      build) ;;                                  # below
+      *) cp -rs "$entry" "$dir/" ;;              # a file: one link; a folder:
+    esac                                         # folders of links
   done
   for entry in "$root"/build/*; do               # stage1, asan, exercises, ...
     case ${entry##*/} in
