@@ -197,6 +197,14 @@ for ((id = 0; id < n; id++)); do
   run_job "$id" >"$results/$id.out" &
 done
 wait
+# a program whose job left no result (its shell killed, say) counts as failed,
+# so that the lines after it are printed and the summary stays honest
+for ((id = 0; id < n; id++)); do
+  if [ "${job_kind[$id]}" != link ] && [ ! -f "$results/$id.count" ]; then
+    echo "  FAIL  ${job_prog[$id]}: no result (was the runner's job killed?)" >"$results/$id.out"
+    finish_job "$id" 0 1 "${job_prog[$id]} (no result)"
+  fi
+done
 print_done
 # the ?PROGRAM entries, which run make: one at a time, nothing else running
 for ((id = 0; id < n; id++)); do
