@@ -145,7 +145,7 @@ exercise: deps
 	@$(MAKE) --no-print-directory $(call ex_tests,$(EX),student) || { echo; echo "exercise $(EX): \
 	$(SOLUTION) did not compile or link; \"undefined reference to X\" above means it does not define X \
 	(the functions to write are in exercises/$(EX)/README.md)"; exit 1; }
-	@bash tools/run_tests.sh "exercise $(EX)::$(call ex_tests,$(EX),student)"
+	@JOBS=$(JOBS) bash tools/run_tests.sh "exercise $(EX)::$(call ex_tests,$(EX),student)"
 
 # ---- fuzzing ---------------------------------------------------------------
 # tests/fuzz/fuzz_scene.c loads any text with the last stage's build.  make
@@ -184,10 +184,11 @@ fuzz:
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_JOBS=$(FUZZ_JOBS) bash tools/fuzz.sh
 
 # ---- tests -----------------------------------------------------------------
-# Every stage runs the tests of its own and all earlier chapters.
+# Every stage runs the tests of its own and all earlier chapters; the test
+# programs run JOBS at a time (tools/run_tests.sh says how they keep apart).
 check: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) check-build
-	@bash tools/run_tests.sh $(foreach s,$(STAGES),"stage$(s):build/stage$(s)/mpm:$(TESTS_release_$(s))" "asan-stage$(s):build/asan/stage$(s)/mpm:$(TESTS_asan_$(s))") \
+	@JOBS=$(JOBS) bash tools/run_tests.sh $(foreach s,$(STAGES),"stage$(s):build/stage$(s)/mpm:$(TESTS_release_$(s))" "asan-stage$(s):build/asan/stage$(s)/mpm:$(TESTS_asan_$(s))") \
 	    "fuzz replay::$(REPLAY)" \
 	    "exercises::$(EXERCISE_CHECKS)" \
 	    "empty solutions::$(foreach e,$(EXERCISES),$(addprefix ?,$(call ex_tests,$(e),empty)))"
