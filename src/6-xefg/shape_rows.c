@@ -10,8 +10,7 @@
 #include "mls.h"
 #include "xefg.h"
 
-/** Grow @p p (of @p size bytes per entry) to @p cap entries. */
-static int grow(void **p, size_t size, int cap)
+int xefg_grow(void **p, size_t size, int cap)
 {
     void *q = realloc(*p, size * (size_t)cap);
     if (!q)
@@ -27,16 +26,16 @@ int shape_rows_add(ShapeRows *R, int n, int grad)
         if (!R->start)
             return -1;
         R->start[0] = 0;
-    } else if (grow((void **)&R->start, sizeof(int), R->n + 2))
+    } else if (xefg_grow((void **)&R->start, sizeof(int), R->n + 2))
         return -1;
     if (R->len + n > R->cap) {
         int cap = R->cap ? R->cap : 1024;
         while (cap < R->len + n)
             cap *= 2;
-        if (grow((void **)&R->dof, sizeof(int), cap) ||
-            grow((void **)&R->N, sizeof(double), cap) ||
-            (grad && (grow((void **)&R->Nx, sizeof(double), cap) ||
-                      grow((void **)&R->Ny, sizeof(double), cap))))
+        if (xefg_grow((void **)&R->dof, sizeof(int), cap) ||
+            xefg_grow((void **)&R->N, sizeof(double), cap) ||
+            (grad && (xefg_grow((void **)&R->Nx, sizeof(double), cap) ||
+                      xefg_grow((void **)&R->Ny, sizeof(double), cap))))
             return -1;
         R->cap = cap;
     }

@@ -195,6 +195,10 @@ double xefg_strain_energy(const Xefg *x, const Sim *sim);
  *  @return 0, or -1 out of memory. */
 int shape_rows_add(ShapeRows *R, int n, int grad);
 
+/** @brief Grow the array *@p p of entries of @p size bytes to @p cap
+ *         entries (set-up only). @return 0, or -1 (*p kept) out of memory. */
+int xefg_grow(void **p, size_t size, int cap);
+
 /** @brief Release the rows. */
 void shape_rows_free(ShapeRows *R);
 

@@ -117,19 +117,10 @@ static int parameters(Xefg *x)
         }
         if (q + m > cap) {
             cap = 2 * (q + m);
-            int *a = realloc(x->dof_node, sizeof(int) * (size_t)cap);
-            if (a)
-                x->dof_node = a;
-            int *b = realloc(x->dof_kind, sizeof(int) * (size_t)cap);
-            if (b)
-                x->dof_kind = b;
-            int *c = realloc(x->dof_crack, sizeof(int) * (size_t)cap);
-            if (c)
-                x->dof_crack = c;
-            int *d = realloc(x->dof_end, sizeof(int) * (size_t)cap);
-            if (d)
-                x->dof_end = d;
-            if (!a || !b || !c || !d)
+            if (xefg_grow((void **)&x->dof_node, sizeof(int), cap) ||
+                xefg_grow((void **)&x->dof_kind, sizeof(int), cap) ||
+                xefg_grow((void **)&x->dof_crack, sizeof(int), cap) ||
+                xefg_grow((void **)&x->dof_end, sizeof(int), cap))
                 return -1;
         }
         for (int k = 0; k < m; k++, q++) {
@@ -235,19 +226,10 @@ static int gauss_points(Xefg *x, const Sim *sim, const CellList *cl,
             break;
         if (x->ngauss + m > gcap) {
             gcap = 2 * (x->ngauss + m);
-            double *a = realloc(x->gx, sizeof(double) * (size_t)gcap);
-            if (a)
-                x->gx = a;
-            double *b = realloc(x->gy, sizeof(double) * (size_t)gcap);
-            if (b)
-                x->gy = b;
-            double *c = realloc(x->gw, sizeof(double) * (size_t)gcap);
-            if (c)
-                x->gw = c;
-            int *d = realloc(x->gnode, sizeof(int) * (size_t)gcap);
-            if (d)
-                x->gnode = d;
-            if (!a || !b || !c || !d)
+            if (xefg_grow((void **)&x->gx, sizeof(double), gcap) ||
+                xefg_grow((void **)&x->gy, sizeof(double), gcap) ||
+                xefg_grow((void **)&x->gw, sizeof(double), gcap) ||
+                xefg_grow((void **)&x->gnode, sizeof(int), gcap))
                 break;
         }
         const Body *B = &sc->bodies[P->body[I]];
