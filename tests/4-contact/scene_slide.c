@@ -58,6 +58,13 @@
  *    way. Not the centre's displacement: that includes the elastic shear
  *    of block and plate (about 0.01 mm, which is itself 0.1 % of a
  *    10 mm slide) that a stuck block has too; the centre is printed.
+ *    Caveat: gravity is switched on at t = 0 and nothing is damped, so
+ *    the normal force oscillates about M |g| cos(theta) and a stuck block
+ *    may truly slip a little while it dips, in the first millisecond or
+ *    so (of the order of the elastic displacements, a few 1e-3 mm; the
+ *    bound at the first time is 3.8e-3 mm, at the last 2.4e-2 mm). A slip
+ *    that stops growing after the onset, as the tables of SLIDE_TABLE
+ *    show, is that kind; one that grows with t is the contact's.
  *  - lift-off: in every case, at every step, the block's centre never
  *    rises above its start by more than 1 % of a cell. Frictionless it
  *    cannot rise at all: block and plate start at rest and unstressed,
@@ -66,8 +73,8 @@
  *    rest (strain, vibration, y motion) is paid by gravity's y part alone,
  *    which is negative for a rise. With friction the same balance leaves
  *    at most the friction force times the plate's elastic tangential
- *    displacement, M |g| mu cos(theta) x 0.01 mm: a rise of 3e-3 mm at
- *    most, 0.3 % of the coarse cell and 0.6 % of the fine one.
+ *    displacement, M |g| mu cos(theta) x 0.01 mm: a rise of the order of
+ *    3e-3 mm, 0.3 % of the coarse cell and 0.6 % of the fine one.
  *  - free sliding (no gravity, frictionless): the block given 1 % of the
  *    wave speed along the plate keeps its mean x speed within 0.1 % at
  *    every step (no tangential force exists; exactly it keeps it all) and
