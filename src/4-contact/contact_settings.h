@@ -23,12 +23,23 @@ typedef enum ContactLawKind {
                               names move as one field would */
 } ContactLawKind;
 
+/** How two fields at a node are found in contact. */
+typedef enum ContactDetection {
+    DETECT_GAP,          /**< approach and a gap <= gap_tolerance, the gap
+                              from the fields' points (bodies' default) */
+    DETECT_VOLUME,       /**< the paper's relative volume (eq. 10-12) and
+                              approach (cracks' default) */
+    DETECT_APPROACH      /**< approach alone (fires at a distance) */
+} ContactDetection;
+
 /// [contact_law_settings]
 /** A contact law and its detection settings. */
 typedef struct ContactLaw {
     ContactLawKind kind; /**< which law */
     double mu;           /**< coefficient of friction (0: frictionless) */
-    int volume_test;     /**< detect by relative volume (eq. 10-12) too */
+    ContactDetection detect; /**< the detection rule */
+    double gap_tolerance; /**< DETECT_GAP: contact when the gap is at most
+                              this (length, >= 0; default 0) */
     double vsep;         /**< V_sep: below it, separated (default 0.9) */
     double vcontact;     /**< V_contact: above it, in contact (default 1.1) */
 } ContactLaw;
@@ -36,18 +47,20 @@ typedef struct ContactLaw {
 
 /**
  * @brief Read a law from group @p s: law = "frictionless" | "friction"
- *        (with mu >= 0) | "stick"; V_sep, V_contact. The keys of @p s
+ *        (with mu >= 0) | "stick"; detection = "gap" | "volume" |
+ *        "approach"; gap_tolerance; V_sep, V_contact. The keys of @p s
  *        are not checked here (the caller knows its other keys).
  * @param r            the scene reader (messages name file and line)
  * @param s            the group
- * @param volume_test  1: the relative-volume test always applies (cracks,
- *                     defaults 0.9 and 1.1); 0: only when V_sep or
- *                     V_contact is given
+ * @param crack        1: a crack's contact (detection "volume" or
+ *                     "approach", default "volume", V_sep 0.9 and V_contact
+ *                     1.1); 0: a pair of bodies (default "gap", or "volume"
+ *                     when V_sep or V_contact is given)
  * @param out          the law read
  * @return 0, or -1 with a message in @p r.
  */
 int contact_law_read(struct SceneReader *r, const config_setting_t *s,
-                     int volume_test, ContactLaw *out);
+                     int crack, ContactLaw *out);
 
 /**
  * @brief Change the momenta of fields (slots) @p a and @p b, found in
@@ -61,10 +74,22 @@ double contact_adjust(Grid *g, int a, int b, const double n[2],
 
 /**
  * @brief Are fields @p a and @p b in contact? The approach velocity
- *        (v_a - v_b) . n > 0 and, when the law asks, the relative volume
- *        @p vrel (eq. 10-12); a bonded pair always is.
+ *        (v_a - v_b) . n > 0 and, by the law's rule, a @p gap at most the
+ *        tolerance or the relative volume @p vrel (eq. 10-12); a bonded
+ *        pair always is.
+ * @param g    the grid (momenta and masses of the slots)
+ * @param a    slot of field a
+ * @param b    slot of field b
+ * @param n    unit normal from a to b
+ * @param vrel relative nodal volume (DETECT_VOLUME)
+ * @param gap  the surfaces' separation along @p n at the start of the step
+ *             (DETECT_GAP; negative: overlap)
+ * @param dt   the step: at Task 4 (@p dt > 0) the gap the end of the step
+ *             would have, gap - dt (v_a - v_b) . n, is tested; 0 at Task 2
+ * @param law  the pair's law
  */
 int contact_pair_detected(const Grid *g, int a, int b, const double n[2],
-                          double vrel, const ContactLaw *law);
+                          double vrel, double gap, double dt,
+                          const ContactLaw *law);
 
 #endif

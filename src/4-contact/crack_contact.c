@@ -95,12 +95,15 @@ static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
     if (S->seam == SEAM_TASK6_CONTACT) {     /* the step's decision */
         if (!(S->held[S->node] & bit))
             return;
-    } else if (!contact_pair_detected(g, a, b, n, vnode / cc->vcell, &cc->law)) {
+    } else if (!contact_pair_detected(g, a, b, n, vnode / cc->vcell, 0.0,
+                                       0.0, &cc->law)) {
         return;
     } else if (S->seam == SEAM_TASK4_CONTACT) {
         S->held[S->node] |= bit;
     }
-    S->work += contact_adjust(g, a, b, n, &cc->law);
+    double w = contact_adjust(g, a, b, n, &cc->law);
+    if (S->seam == SEAM_TASK4_CONTACT)       /* the change the points get */
+        S->work += w;
     *adjusted = 1;
 }
 /// [contact_pair]

@@ -34,8 +34,8 @@ static ContactState *contact_state(Sim *sim)
     return S;
 }
 
-const char *const crack_contact_keys[] = {"law", "mu", "V_sep", "V_contact",
-                                          NULL};
+const char *const crack_contact_keys[] = {"law", "mu", "detection", "V_sep",
+                                          "V_contact", NULL};
 
 /// [crack_contact_read]
 int crack_contact_read(Sim *sim, const config_setting_t *s, int index,

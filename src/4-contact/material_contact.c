@@ -30,9 +30,11 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     M->mixed = calloc((size_t)nn, 1);
     M->near = calloc((size_t)nn, 1);
     M->area = calloc((size_t)nn, sizeof(double));
+    M->cx = calloc((size_t)nn * CONTACT_AXES, sizeof(double));
+    M->cy = calloc((size_t)nn * CONTACT_AXES, sizeof(double));
     M->held = calloc((size_t)nn, sizeof(unsigned));
     if (M->shift < 0 || fields_enable(sim) || !M->cell_groups || !M->mixed ||
-        !M->near || !M->area || !M->held) {
+        !M->near || !M->area || !M->cx || !M->cy || !M->held) {
         snprintf(err, errlen, "%s: out of memory (or field-key bits) for "
                  "contact between bodies", sim->scene.file);
         return -1;
@@ -77,20 +79,20 @@ int material_key_fields(Sim *sim, void *state, Seam seam)
 }
 /// [material_key_fields]
 
-/** Room for the per-slot gradients (grown with the grid's slots). */
-static int reserve_gradients(Sim *sim, MaterialContact *M)
+/** Room for the per-slot sums (grown with the grid's slots). */
+static int reserve_slots(Sim *sim, MaterialContact *M)
 {
     int cap = sim->grid.capacity;
     if (cap <= M->cap)
         return 0;
-    double *x = realloc(M->gx, sizeof(double) * (size_t)cap);
-    if (x)
-        M->gx = x;
-    double *y = realloc(M->gy, sizeof(double) * (size_t)cap);
-    if (y)
-        M->gy = y;
-    if (!x || !y)
-        return step_fail(sim, 0, "memory for contact normals", cap);
+    double **arr[5] = {&M->gx, &M->gy, &M->va, &M->lo, &M->hi};
+    for (int k = 0; k < 5; k++) {
+        size_t n = (size_t)cap * (k < 3 ? 1u : CONTACT_AXES);
+        double *x = realloc(*arr[k], sizeof(double) * n);
+        if (!x)
+            return step_fail(sim, 0, "memory for contact normals", cap);
+        *arr[k] = x;
+    }
     M->cap = cap;
     return 0;
 }
@@ -112,48 +114,163 @@ static void mark_cells_around(unsigned char *cells, const FieldTable *F,
     }
 }
 
+/** A point's current area (volume / thickness) and its half sizes along
+ *  x and y (k x k points filled a cell: dx / k by dy / k, stretched). */
+static double point_size(const Sim *sim, int p, double half[2])
+{
+    const Particles *P = &sim->pts;
+    const Body *b = &sim->scene.bodies[P->body[p]];
+    double sx = 1.0 + P->exx[p], sy = 1.0 + P->eyy[p];
+    half[0] = 0.5 * sim->grid.dx / b->ppc * sx;
+    half[1] = 0.5 * sim->grid.dy / b->ppc * sy;
+    return sx * sy * P->vol[p] / b->thickness;
+}
+
 /// [mass_gradients]
-/** Task 2: at the nodes with several fields, each field's mass gradient
- *  sum_p m_p grad S_ip and the node's area sum_p A_p S_ip (A_p: the
- *  point's current volume over its body's thickness). A point in a cell
+/** Task 2, first pass: at the nodes with several fields, each field's mass
+ *  gradient sum_p m_p grad S_ip and area sum_p A_p S_ip. A point in a cell
  *  none of whose corners has several fields costs one test. */
-static int mass_gradients(Sim *sim, MaterialContact *M)
+static void mass_gradients(Sim *sim, MaterialContact *M)
 {
     const FieldTable *F = &sim->fields;
-    const Grid *g = &sim->grid;
     const Particles *P = &sim->pts;
-    const Body *bodies = sim->scene.bodies;
-    int nx = g->nnx;
-    if (reserve_gradients(sim, M))
-        return -1;
-    for (int k = 0; k < F->ntouched; k++) {     /* the nodes with several fields */
-        int n = F->touched[k];
-        M->area[n] = 0.0;
-        for (int s = n; s >= 0; s = field_next(F, g, s))
-            M->gx[s] = M->gy[s] = 0.0;
-    }
-    mark_cells_around(M->near, F, nx, 1);       /* and the cells around them */
     for (int p = 0; p < P->n; p++) {
         if (!M->near[P->cell[p]])
             continue;
         int node[STENCIL_NODES];
         Stencil st;
+        double half[2], area = point_size(sim, p, half), mp = P->m[p];
         stencil_nodes(sim, p, node);
         stencil_of_point(sim, p, &st);
-        double mp = P->m[p];
-        double area = (1.0 + P->exx[p]) * (1.0 + P->eyy[p]) * P->vol[p] /
-                      bodies[P->body[p]].thickness;
         for (int a = 0; a < STENCIL_NODES; a++)
             if (F->first[node[a]] >= 0) {
                 M->gx[st.slot[a]] += mp * st.Gx[a];
                 M->gy[st.slot[a]] += mp * st.Gy[a];
-                M->area[node[a]] += area * st.S[a];
+                M->va[st.slot[a]] += area * st.S[a];
             }
     }
-    mark_cells_around(M->near, F, nx, 0);       /* clean for the next step */
-    return 0;
 }
 /// [mass_gradients]
+
+/** The candidate directions of node @p n (CONTACT_AXES; zero when a
+ *  field gives none): from its two fields of largest area, a and b, the
+ *  unit g_a, -g_b and the average of contact_interface_normal(). */
+static void candidate_axes(Sim *sim, MaterialContact *M, int n)
+{
+    const FieldTable *F = &sim->fields;
+    const Grid *g = &sim->grid;
+    int a = -1, b = -1;
+    M->area[n] = 0.0;
+    for (int s = n; s >= 0; s = field_next(F, g, s)) {
+        M->area[n] += M->va[s];
+        if (a < 0 || M->va[s] > M->va[a]) {
+            b = a;
+            a = s;
+        } else if (b < 0 || M->va[s] > M->va[b]) {
+            b = s;
+        }
+    }
+    if (b < 0)
+        b = a;                                  /* one field: no pair to use it */
+    double *cx = &M->cx[CONTACT_AXES * n], *cy = &M->cy[CONTACT_AXES * n];
+    double ga[2] = {M->gx[a], M->gy[a]}, gb[2] = {M->gx[b], M->gy[b]}, c[2];
+    double la = hypot(ga[0], ga[1]), lb = hypot(gb[0], gb[1]);
+    cx[0] = la > 0 ? ga[0] / la : 0.0;
+    cy[0] = la > 0 ? ga[1] / la : 0.0;
+    cx[1] = lb > 0 ? -gb[0] / lb : 0.0;
+    cy[1] = lb > 0 ? -gb[1] / lb : 0.0;
+    int ok = contact_interface_normal(ga, gb, c);
+    cx[2] = ok ? c[0] : 0.0;
+    cy[2] = ok ? c[1] : 0.0;
+}
+
+/// [interface_reach]
+/** Task 2, second pass: how far each field's points reach along each
+ *  candidate direction c of the node: a point covers x_p . c -/+ r_p,
+ *  r_p = |c_x| half_x + |c_y| half_y (its rectangle's half width). */
+static void interface_reach(Sim *sim, MaterialContact *M)
+{
+    const FieldTable *F = &sim->fields;
+    const Particles *P = &sim->pts;
+    for (int p = 0; p < P->n; p++) {
+        if (!M->near[P->cell[p]])
+            continue;
+        int node[STENCIL_NODES];
+        Stencil st;
+        double half[2];
+        point_size(sim, p, half);
+        stencil_nodes(sim, p, node);
+        stencil_of_point(sim, p, &st);
+        for (int a = 0; a < STENCIL_NODES; a++) {
+            int n = node[a], s = st.slot[a];
+            if (F->first[n] < 0 || st.S[a] <= 0.0)
+                continue;
+            for (int k = 0; k < CONTACT_AXES; k++) {
+                double cx = M->cx[CONTACT_AXES * n + k], cy = M->cy[CONTACT_AXES * n + k];
+                double at = P->x[p] * cx + P->y[p] * cy;
+                double r = fabs(cx) * half[0] + fabs(cy) * half[1];
+                double *lo = &M->lo[CONTACT_AXES * s + k], *hi = &M->hi[CONTACT_AXES * s + k];
+                *lo = fmin(*lo, at - r);
+                *hi = fmax(*hi, at + r);
+            }
+        }
+    }
+}
+/// [interface_reach]
+
+/** Task 2: the per-slot sums, the candidate directions and the reaches of
+ *  this step. */
+static int interface_geometry(Sim *sim, MaterialContact *M)
+{
+    const FieldTable *F = &sim->fields;
+    const Grid *g = &sim->grid;
+    if (reserve_slots(sim, M))
+        return -1;
+    for (int k = 0; k < F->ntouched; k++)       /* the nodes with several fields */
+        for (int s = F->touched[k]; s >= 0; s = field_next(F, g, s)) {
+            M->gx[s] = M->gy[s] = M->va[s] = 0.0;
+            for (int c = 0; c < CONTACT_AXES; c++) {
+                M->lo[CONTACT_AXES * s + c] = HUGE_VAL;
+                M->hi[CONTACT_AXES * s + c] = -HUGE_VAL;
+            }
+        }
+    mark_cells_around(M->near, F, g->nnx, 1);   /* and the cells around them */
+    mass_gradients(sim, M);
+    for (int k = 0; k < F->ntouched; k++)
+        candidate_axes(sim, M, F->touched[k]);
+    interface_reach(sim, M);
+    mark_cells_around(M->near, F, g->nnx, 0);   /* clean for the next step */
+    return 0;
+}
+
+/// [pair_axis]
+/** The normal @p n (from a to b) and the gap of fields @p a and @p b at
+ *  node @p node: of the candidate directions, either way round, the one
+ *  along which the two fields' points lie farthest apart (for convex
+ *  bodies the separation is the largest gap over all directions, the
+ *  separating-axis theorem). @return 0 when no candidate exists. */
+static int pair_axis(const MaterialContact *M, int node, int a, int b,
+                     double n[2], double *gap)
+{
+    int found = 0;
+    for (int k = 0; k < CONTACT_AXES; k++) {
+        double cx = M->cx[CONTACT_AXES * node + k], cy = M->cy[CONTACT_AXES * node + k];
+        if (cx == 0.0 && cy == 0.0)
+            continue;
+        const double *la = &M->lo[CONTACT_AXES * a], *ha = &M->hi[CONTACT_AXES * a];
+        const double *lb = &M->lo[CONTACT_AXES * b], *hb = &M->hi[CONTACT_AXES * b];
+        double up = lb[k] - ha[k], down = la[k] - hb[k];  /* b above a, below */
+        double best = up >= down ? up : down, sign = up >= down ? 1.0 : -1.0;
+        if (!found || best > *gap) {
+            *gap = best;
+            n[0] = sign * cx;
+            n[1] = sign * cy;
+            found = 1;
+        }
+    }
+    return found;
+}
+/// [pair_axis]
 
 /// [material_contact_task]
 int material_contact_task(Sim *sim, void *state, Seam seam)
@@ -164,11 +281,12 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
     unsigned gmask = M->group_mask;
     if (seam == SEAM_TASK2_CONTACT) {           /* a new step */
         M->nodes = 0;
-        if (mass_gradients(sim, M))
+        if (interface_geometry(sim, M))
             return -1;
     }
     M->task_nodes = 0;
     double cell = g->dx * g->dy;
+    double dt = seam == SEAM_TASK4_CONTACT ? sim->dt : 0.0;
     for (int k = 0; k < F->ntouched; k++) {
         int n = F->touched[k], adjusted = 0, pair = 0;
         double vrel = M->area[n] / cell;        /* eq. 10, per unit thickness */
@@ -186,20 +304,20 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
                 unsigned bit = pair < 32 ? 1u << pair : 0u;
                 pair++;
                 const ContactLaw *law = material_law(M, ga, gb);
-                double nrm[2] = {0.0, 0.0};
-                double grad_a[2] = {M->gx[a], M->gy[a]}, grad_b[2] = {M->gx[b], M->gy[b]};
-                if (law->kind != CONTACT_BONDED &&
-                    !contact_interface_normal(grad_a, grad_b, nrm))
+                double nrm[2] = {0.0, 0.0}, gap = 0.0;
+                if (law->kind != CONTACT_BONDED && !pair_axis(M, n, a, b, nrm, &gap))
                     continue;
                 if (seam == SEAM_TASK6_CONTACT) {   /* the step's decision */
                     if (!(M->held[n] & bit))
                         continue;
-                } else if (!contact_pair_detected(g, a, b, nrm, vrel, law)) {
+                } else if (!contact_pair_detected(g, a, b, nrm, vrel, gap, dt, law)) {
                     continue;
                 } else if (seam == SEAM_TASK4_CONTACT) {
                     M->held[n] |= bit;
                 }
-                M->work += contact_adjust(g, a, b, nrm, law);
+                double w = contact_adjust(g, a, b, nrm, law);
+                if (seam == SEAM_TASK4_CONTACT)  /* the change the points get */
+                    M->work += w;
                 adjusted |= law->kind != CONTACT_BONDED;
             }
         }

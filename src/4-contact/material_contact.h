@@ -21,6 +21,11 @@
 
 struct SceneReader;
 
+/** Candidate directions of an interface at a node: the outward normal
+ *  of its field of largest area, the inward normal of the next, and their
+ *  average (contact_interface_normal()). */
+#define CONTACT_AXES 3
+
 /** Most contact groups a scene may name in its pairs (the group's part of
  *  the field key is 5 bits; group 0 is every group no pair names). */
 #define CONTACT_GROUPS_MAX 31
@@ -44,12 +49,20 @@ typedef struct MaterialContact {
     double *gx;           /**< per slot: mass gradient x (at nodes with
                                several fields) */
     double *gy;           /**< per slot: mass gradient y */
-    double *area;         /**< per node: sum_p A_p S_ip, the points' current
-                               areas (volume / thickness) */
+    double *va;           /**< per slot: area sum_p A_p S_ip (A_p: the
+                               point's current volume / thickness) */
+    double *lo;           /**< per slot, CONTACT_AXES at a time: lowest
+                               reach of its points along each candidate
+                               direction (x_p . c - r_p) */
+    double *hi;           /**< per slot, likewise: highest reach */
+    double *cx;           /**< per node, CONTACT_AXES at a time: the
+                               candidate directions c, x */
+    double *cy;           /**< per node: the candidates, y */
+    double *area;         /**< per node: sum over its fields of va */
     unsigned *held;       /**< per node: bit k set when its k-th pair of
                                fields was in contact at Task 4 (Task 6
                                keeps that decision) */
-    int cap;              /**< slots of gx, gy */
+    int cap;              /**< slots of gx, gy, va, lo, hi */
     int nodes;            /**< most nodes adjusted at one task of this step */
     int task_nodes;       /**< nodes adjusted at the current task */
     double work;          /**< work done by material contact (mJ) */

@@ -104,7 +104,8 @@ static int read_pair(SceneReader *r, const config_setting_t *e,
     return 0;
 }
 
-const char *const material_contact_keys[] = {"pair", "law", "mu", "V_sep",
+const char *const material_contact_keys[] = {"pair", "law", "mu", "detection",
+                                             "gap_tolerance", "V_sep",
                                              "V_contact", NULL};
 
 /// [material_contact_read]
@@ -199,5 +200,10 @@ void material_contact_release(void *state)
     free(M->gx);
     free(M->gy);
     free(M->area);
+    free(M->va);
+    free(M->lo);
+    free(M->hi);
+    free(M->cx);
+    free(M->cy);
     free(M);
 }

@@ -15,16 +15,16 @@
  * restitution and the energy drift are printed, beside chapter 1's
  * single-field rebound of the same disks.
  *
- * USF: the total energy grows while the disks touch (a few per cent): the
- * test asserts that this is a time-integration error, of first order in
- * dt: halving the CFL factor (0.1 to 0.05) must halve the gain (ratio in
- * [0.4, 0.6]; at 0.2 to 0.1 it is 0.58, not yet asymptotic).
- *
- * MUSL: Task 6 keeps the contact decisions of Task 4 (a pair released at
- * Task 6 after its Task-4 impulse reached the points gained energy, +4.3 %
- * at cfl 0.1 before that rule); the test asserts that MUSL's energy now
- * falls at both steps (the scheme's own dissipation and the inelastic
- * meeting of two fields at a node) and falls less at the smaller step.
+ * Contact starts when the disks touch: their centres close at 0.2 sqrt 2
+ * mm/ms from 0.5 sqrt 2 mm apart, radius 0.2 mm, so the disks touch at
+ * t = (0.5 sqrt 2 - 0.4) / (0.2 sqrt 2) = 1.086 ms; the first contact must
+ * come no earlier than half a cell (0.025 mm) of closing before that,
+ * 0.998 ms (the gap test: contact at 1.000 ms; approach alone fired at
+ * 0.630 ms, when the disks first shared a node, 1.5 cells apart). Contact
+ * makes no energy: the total energy at the end is at most its start, for
+ * MUSL and USF at cfl 0.1 and 0.05. (It falls 1.5-4.6 %: the two fields'
+ * normal velocities meet inelastically at each node; the field's benchmark
+ * asks below 0.5 %, open in issue 25.)
  *
  * The same with the pair's volume test (V_sep = 0.9): the same checks,
  * and the restitution and energy printed.
@@ -44,6 +44,10 @@
 #include "material_contact.h"
 
 static const char *const SCENE = "tests/4-contact/scenes/disks_contact.cfg";
+
+/** The disks' closing speed (mm/ms) and the time they touch (ms). */
+#define CLOSING (0.2 * sqrt(2.0))
+#define TOUCH ((0.5 * sqrt(2.0) - 0.4) / CLOSING)
 
 /** Mean velocity of body @p b along the line of approach (1, 1)/sqrt 2. */
 static double approach_speed(const Particles *P, int b)
@@ -101,7 +105,7 @@ static DisksRun collide(const char *scheme, const char *cfl, const char *extra)
            r.t_first, r.t_last, r.restitution, 100 * r.gain, r.drift, r.work);
     assert_true(r.drift <= 1e-12);
     assert_true(r.work <= 1e-12);
-    assert_true(r.t_first > 0);
+    assert_true(r.t_first >= TOUCH - 0.025 / CLOSING);  /* not before touching */
     assert_true(r.t_last < sim->t - 1.0);       /* apart for the last ms */
     assert_true(vl < 0 && vr > 0);              /* bounced */
     assert_true(r.translation <= r.kinetic);
@@ -123,24 +127,17 @@ static double one_field(const char *scheme)
     return e;
 }
 
-/** Runs at cfl 0.1 and 0.05; @p first_order: the gain must halve with
- *  the step, else the energy must fall at both, less at the smaller. */
-static void frictionless(const char *scheme, int first_order)
+/** Runs at cfl 0.1 and 0.05: contact creates no energy. */
+static void frictionless(const char *scheme)
 {
     DisksRun a = collide(scheme, "0.1", NULL), b = collide(scheme, "0.05", NULL);
-    double ratio = b.gain / a.gain;
-    printf("  %-4s energy gain at cfl 0.05 / at cfl 0.1: %.3f (first order: 0.5); "
-           "chapter 1's single field: restitution %.4f\n", scheme, ratio,
+    printf("  %-4s energy change at cfl 0.1 %+.2f %%, at 0.05 %+.2f %%; chapter 1's "
+           "single field: restitution %.4f\n", scheme, 100 * a.gain, 100 * b.gain,
            one_field(scheme));
-    if (first_order) {
-        assert_true(ratio >= 0.4 && ratio <= 0.6);
-    } else {
-        assert_true(a.gain < 0 && b.gain < 0);
-        assert_true(b.gain > a.gain);
-    }
+    assert_true(a.gain <= 0 && b.gain <= 0);
 }
 
-static void musl(void **state) { (void)state; frictionless("musl", 0); }
+static void musl(void **state) { (void)state; frictionless("musl"); }
 
 /** The pair with the volume test (V_sep = 0.9): the disks bounce too; the
  *  energy and restitution are printed for chapter 4. */
@@ -149,7 +146,7 @@ static void volume_test(void **state)
     (void)state;
     collide("musl", "0.1", "contact.[0].V_sep=0.9");
 }
-static void usf(void **state) { (void)state; frictionless("usf", 1); }
+static void usf(void **state) { (void)state; frictionless("usf"); }
 
 /** A bonded pair is one field: chapter 1's run, to round-off. */
 static void bonded_is_one_field(void **state)
