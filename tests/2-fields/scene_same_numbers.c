@@ -65,6 +65,10 @@ static const SameCase cases[] = {
     {"figures/fig5/beam_impact_contact.cfg", "0.01", 4},
     {"figures/fig4/five_disks.cfg", "0.002", 4},
     {"figures/fig6/beam_supports.cfg", "0.01", 4},
+    {"tests/4-contact/scenes/slide.cfg", "0.5", 4},
+    {"tests/4-contact/scenes/bars_gap.cfg", "0.1", 4},
+    {"tests/4-contact/scenes/bars_touching.cfg", "0.1", 4},
+    {"tests/4-contact/scenes/bars_impedance.cfg", "0.1", 4},
 };
 
 /** Scenes of the repository that no earlier stage runs or that another
