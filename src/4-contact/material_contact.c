@@ -160,9 +160,7 @@ static void candidate_axes(Sim *sim, MaterialContact *M, int n)
     const FieldTable *F = &sim->fields;
     const Grid *g = &sim->grid;
     int a = -1, b = -1;
-    M->area[n] = 0.0;
     for (int s = n; s >= 0; s = field_next(F, g, s)) {
-        M->area[n] += M->va[s];
         if (a < 0 || M->va[s] > M->va[a]) {
             b = a;
             a = s;
@@ -236,33 +234,52 @@ static int interface_geometry(Sim *sim, MaterialContact *M)
         }
     mark_cells_around(M->near, F, g->nnx, 1);   /* and the cells around them */
     mass_gradients(sim, M);
-    for (int k = 0; k < F->ntouched; k++)
-        candidate_axes(sim, M, F->touched[k]);
-    interface_reach(sim, M);
+    for (int k = 0; k < F->ntouched; k++) {     /* eq. 8-10: the node's area */
+        int n = F->touched[k];
+        M->area[n] = 0.0;
+        for (int s = n; s >= 0; s = field_next(F, g, s))
+            M->area[n] += M->va[s];
+        if (M->reach)
+            candidate_axes(sim, M, n);
+    }
+    if (M->reach)
+        interface_reach(sim, M);
     mark_cells_around(M->near, F, g->nnx, 0);   /* clean for the next step */
     return 0;
 }
 
 /// [pair_axis]
 /** The normal @p n (from a to b) and the gap of fields @p a and @p b at
- *  node @p node: of the candidate directions, either way round, the one
- *  along which the two fields' points lie farthest apart (for convex
- *  bodies the separation is the largest gap over all directions, the
- *  separating-axis theorem). @return 0 when no candidate exists. */
+ *  node @p node: of the candidate directions, each turned to point from a
+ *  to b (as g_a - g_b does), the one along which the two fields' points
+ *  lie farthest apart (for convex bodies the separation is the largest
+ *  gap over all directions, the separating-axis theorem).
+ *  @return 0 when no candidate exists. */
 static int pair_axis(const MaterialContact *M, int node, int a, int b,
                      double n[2], double *gap)
 {
+    double ga[2] = {M->gx[a], M->gy[a]}, gb[2] = {M->gx[b], M->gy[b]}, ab[2];
+    if (!contact_interface_normal(ga, gb, ab))
+        return 0;                               /* which side is which: unknown */
+    if (!M->reach) {                            /* no pair detects by a gap */
+        n[0] = ab[0];
+        n[1] = ab[1];
+        *gap = 0.0;
+        return 1;
+    }
     int found = 0;
     for (int k = 0; k < CONTACT_AXES; k++) {
         double cx = M->cx[CONTACT_AXES * node + k], cy = M->cy[CONTACT_AXES * node + k];
-        if (cx == 0.0 && cy == 0.0)
-            continue;
-        const double *la = &M->lo[CONTACT_AXES * a], *ha = &M->hi[CONTACT_AXES * a];
-        const double *lb = &M->lo[CONTACT_AXES * b], *hb = &M->hi[CONTACT_AXES * b];
-        double up = lb[k] - ha[k], down = la[k] - hb[k];  /* b above a, below */
-        double best = up >= down ? up : down, sign = up >= down ? 1.0 : -1.0;
-        if (!found || best > *gap) {
-            *gap = best;
+        double along = cx * ab[0] + cy * ab[1];
+        if (along == 0.0)
+            continue;                           /* none, or across the pair */
+        double sign = along > 0 ? 1.0 : -1.0;
+        const double *lo = &M->lo[CONTACT_AXES * (sign > 0 ? b : a)];
+        const double *hi = &M->hi[CONTACT_AXES * (sign > 0 ? a : b)];
+        double g = lo[k] - hi[k];               /* the far one's near reach less
+                                                   the near one's far reach */
+        if (!found || g > *gap) {
+            *gap = g;
             n[0] = sign * cx;
             n[1] = sign * cy;
             found = 1;

@@ -59,6 +59,9 @@ typedef struct MaterialContact {
                                candidate directions c, x */
     double *cy;           /**< per node: the candidates, y */
     double *area;         /**< per node: sum over its fields of va */
+    int reach;            /**< a pair detects by a gap: the candidates and
+                               reaches are found (else the normal is
+                               contact_interface_normal()'s) */
     unsigned *held;       /**< per node: bit k set when its k-th pair of
                                fields was in contact at Task 4 (Task 6
                                keeps that decision) */

@@ -164,6 +164,7 @@ int material_contact_read(Sim *sim, const config_setting_t *s, int index,
         for (int k = 0; k < n; k++) {
             M->law[gi[2 * k] * G + gi[2 * k + 1]] = read[k];
             M->law[gi[2 * k + 1] * G + gi[2 * k]] = read[k];
+            M->reach |= read[k].detect == DETECT_GAP;
         }
         for (int b = 0; b < nb; b++)
             for (int g = 1; g < G; g++)
