@@ -30,6 +30,8 @@ void grid_momentum_update(Sim *sim)
     Grid *g = &sim->grid;
     const RunSettings *run = &sim->scene.run;
     double dt = sim->dt, kappa = run->damping;
+    double gs = gravity_scale(run, sim->t + 0.5 * dt);  /* mid-step */
+    double gx = run->gx * gs, gy = run->gy * gs;
     for (int s = 0; s < g->nslots; s++) {
         double m = g->m[s];
         if (m <= 0.0) {
@@ -38,8 +40,8 @@ void grid_momentum_update(Sim *sim)
         }
         unsigned fix = g->fixed[grid_slot_node(g, s)];
         /* eq. 4: internal + external (body force m_i b) - damping */
-        double fx = g->fx[s] + m * run->gx - kappa * g->px[s];
-        double fy = g->fy[s] + m * run->gy - kappa * g->py[s];
+        double fx = g->fx[s] + m * gx - kappa * g->px[s];
+        double fy = g->fy[s] + m * gy - kappa * g->py[s];
         if (fix & GRID_FIX_X)
             fx = 0.0;
         if (fix & GRID_FIX_Y)

@@ -115,6 +115,8 @@ typedef struct RunSettings {
     PlaneKind plane;    /**< plane stress or plane strain */
     double gx;          /**< body force per unit mass x (mm/ms^2) */
     double gy;          /**< body force per unit mass y (mm/ms^2) */
+    double gravity_ramp; /**< time over which gravity grows linearly from
+                              zero (ms; 0: all of it from the start) */
     const UpdateScheme *scheme; /**< stress-update scheme */
     const struct Method *method; /**< how a step is taken (run.method) */
     int snapshots;      /**< number of particle/grid snapshots after t = 0 */
@@ -128,6 +130,13 @@ typedef struct RunSettings {
                              spin (run.stress_rate = "jaumann"); 0: the
                              paper's eq. 35-36, unrotated */
 } RunSettings;
+
+/** @brief The fraction of run.gravity acting at time @p t: t / ramp during
+ *         the ramp, else exactly 1. */
+static inline double gravity_scale(const RunSettings *run, double t)
+{
+    return t < run->gravity_ramp ? t / run->gravity_ramp : 1.0;
+}
 
 /** A complete scene. */
 typedef struct Scene {

@@ -12,7 +12,7 @@ const char *const scene_section_keys[] = {"grid", "run", "materials", "bodies",
     "boundaries", "loads", "point_velocities", NULL};
 const char *const scene_grid_keys[] = {"origin", "cells", "cell_size", NULL};
 const char *const scene_run_keys[] = {"time", "cfl", "allow_cfl_above_one",
-    "update", "method", "damping", "plane", "gravity", "snapshots",
+    "update", "method", "damping", "plane", "gravity", "gravity_ramp", "snapshots",
     "history_every", "stress_rate", "precision", "units", "checkpoint_every",
     NULL};
 const char *const scene_material_keys[] = {"name", "law", "rho", NULL};

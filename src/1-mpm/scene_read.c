@@ -415,6 +415,7 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         scene_number(r, g, "cfl", 0, 0.5, &run->cfl) < 0 ||
         scene_number(r, g, "damping", 0, 0.0, &run->damping) < 0 ||
         scene_pair(r, g, "gravity", 0, gr) < 0 ||
+        scene_number(r, g, "gravity_ramp", 0, 0.0, &run->gravity_ramp) < 0 ||
         scene_number(r, g, "snapshots", 0, 10, &snaps) < 0 ||
         scene_number(r, g, "history_every", 0, 0, &hist) < 0 ||
         scene_number(r, g, "checkpoint_every", 0, 0, &ckpt) < 0 ||
@@ -455,6 +456,10 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         return scene_error(r, config_setting_get_member(g, "cfl"), "cfl",
                            "%g exceeds 1, the explicit stability limit; set "
                            "allow_cfl_above_one = true to insist", run->cfl);
+    if (!(run->gravity_ramp >= 0))
+        return scene_error(r, config_setting_get_member(g, "gravity_ramp"),
+                           "gravity_ramp", "%g must be >= 0 (a time; 0: gravity "
+                           "at once)", run->gravity_ramp);
     if (!(run->damping >= 0))
         return scene_error(r, config_setting_get_member(g, "damping"), "damping",
                            "%g must be >= 0", run->damping);

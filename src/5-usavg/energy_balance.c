@@ -71,6 +71,7 @@ int energy_balance_step(Sim *sim, void *state, Seam seam)
     const Particles *P = &sim->pts;
     const RunSettings *run = &sim->scene.run;
     double dt = sim->dt, wg = 0, wl = 0;
+    double gs = gravity_scale(run, sim->t + 0.5 * dt);  /* as the step used */
     const Scene *sc = &sim->scene;
     for (int l = 0; l < sc->nloads; l++) {          /* before B->v moves on */
         const Load *L = &sc->loads[l];
@@ -85,7 +86,7 @@ int energy_balance_step(Sim *sim, void *state, Seam seam)
     }
     for (int p = 0; p < P->n; p++) {
         double mx = 0.5 * (B->vx[p] + P->vx[p]), my = 0.5 * (B->vy[p] + P->vy[p]);
-        wg += P->m[p] * (run->gx * mx + run->gy * my);
+        wg += P->m[p] * (run->gx * gs * mx + run->gy * gs * my);
         B->vx[p] = P->vx[p];
         B->vy[p] = P->vy[p];
     }

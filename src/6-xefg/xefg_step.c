@@ -17,7 +17,8 @@ static void external_force(const Xefg *x, const Sim *sim, double t, double *f)
 {
     const Scene *sc = &sim->scene;
     const ShapeRows *R = &x->at_node;
-    double gx = sc->run.gx, gy = sc->run.gy;
+    double gs = gravity_scale(&sc->run, t);
+    double gx = sc->run.gx * gs, gy = sc->run.gy * gs;
     if (gx != 0.0 || gy != 0.0)
         for (int q = 0; q < x->ndof; q++) {
             f[2 * q] += x->load[q] * gx;
