@@ -183,6 +183,12 @@ int hooks_on_checkpoint(Hooks *h, CheckpointHook fn, void *state)
     return subscribe(&h->seam[SEAM_CHECKPOINT], s);
 }
 
+int hooks_on_energy(Hooks *h, EnergyHook fn, void *state)
+{
+    Subscriber s = {.fn.energy = fn, .state = state, .rank = h->rank};
+    return subscribe(&h->seam[SEAM_ENERGY], s);
+}
+
 int hooks_run_report(const struct Sim *sim, FILE *f)
 {
     const SeamList *l = &sim->hooks.seam[SEAM_REPORT];

@@ -42,6 +42,7 @@ typedef enum Seam {
     SEAM_HISTORY,        /**< write extra columns of history.csv */
     SEAM_REPORT,         /**< end of a run: print a summary (stdout) */
     SEAM_CHECKPOINT,     /**< save or restore state a restart needs */
+    SEAM_ENERGY,         /**< energy a stage has taken out of the run */
     SEAM_COUNT           /**< number of seams */
 } Seam;
 
@@ -63,6 +64,10 @@ typedef int (*ReportHook)(const struct Sim *sim, void *state, FILE *f);
 /** A checkpoint subscriber: save (@p save = 1) or restore (0) the state
  *  that lasts from step to step, with checkpoint_io(); 0 or -1. */
 typedef int (*CheckpointHook)(struct Sim *sim, void *state, FILE *f, int save);
+/** An energy subscriber: the energy its stage has dissipated since the run
+ *  began (>= 0 when taken out), named for the report in *@p name. */
+typedef double (*EnergyHook)(const struct Sim *sim, void *state,
+                             const char **name);
 /** One subscriber: its function (of the seam's type) and its own state. */
 typedef struct Subscriber {
     union {
@@ -72,6 +77,7 @@ typedef struct Subscriber {
         HistoryHook history;   /**< SEAM_HISTORY */
         ReportHook report;     /**< SEAM_REPORT */
         CheckpointHook checkpoint; /**< SEAM_CHECKPOINT */
+        EnergyHook energy;     /**< SEAM_ENERGY */
     } fn;                      /**< the function */
     void *state;               /**< passed back to it */
     int rank;                  /**< stage order of its installer */
@@ -222,6 +228,9 @@ int hooks_on_report(Hooks *h, ReportHook fn, void *state);
 
 /** @brief Subscribe to SEAM_CHECKPOINT. @return 0 or -1. */
 int hooks_on_checkpoint(Hooks *h, CheckpointHook fn, void *state);
+
+/** @brief Subscribe to SEAM_ENERGY. @return 0 or -1. */
+int hooks_on_energy(Hooks *h, EnergyHook fn, void *state);
 /** @brief Print the end-of-run lines of every SEAM_REPORT subscriber to
  *         @p f. @return 0, or -1 when a write failed. */
 int hooks_run_report(const struct Sim *sim, FILE *f);

@@ -186,6 +186,13 @@ int crack_contact_history(const Sim *sim, void *state, FILE *f, int header)
                ? -1 : 0;
 }
 
+double crack_contact_energy(const Sim *sim, void *state, const char **name)
+{
+    (void)sim;
+    *name = "crack contact";
+    return -((const ContactState *)state)->work;   /* work <= 0: dissipated */
+}
+
 int crack_contact_checkpoint(Sim *sim, void *state, FILE *f, int save)
 {
     (void)sim;

@@ -58,6 +58,10 @@ int crack_contact_task(Sim *sim, void *state, Seam seam);
 /** @brief history.csv columns contact_nodes and contact_work. */
 int crack_contact_history(const Sim *sim, void *state, FILE *f, int header);
 
+/** @brief SEAM_ENERGY: the energy crack contact has dissipated (friction),
+ *         named "crack contact". */
+double crack_contact_energy(const Sim *sim, void *state, const char **name);
+
 /** @brief Save or restore the contact's work and node count
  *         (SEAM_CHECKPOINT). */
 int crack_contact_checkpoint(Sim *sim, void *state, FILE *f, int save);

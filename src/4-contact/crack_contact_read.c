@@ -29,6 +29,7 @@ static ContactState *contact_state(Sim *sim)
         hooks_on_step(h, SEAM_TASK4_CONTACT, crack_contact_task, S) ||
         hooks_on_step(h, SEAM_TASK6_CONTACT, crack_contact_task, S) ||
         hooks_on_history(h, crack_contact_history, S) ||
+        hooks_on_energy(h, crack_contact_energy, S) ||
         hooks_on_checkpoint(h, crack_contact_checkpoint, S))
         return NULL;
     return S;

@@ -378,6 +378,13 @@ int material_contact_history(const Sim *sim, void *state, FILE *f, int header)
 }
 /// [material_contact_history]
 
+double material_contact_energy(const Sim *sim, void *state, const char **name)
+{
+    (void)sim;
+    *name = "contact between bodies";
+    return -((const MaterialContact *)state)->work;  /* work <= 0: dissipated */
+}
+
 int material_contact_checkpoint(Sim *sim, void *state, FILE *f, int save)
 {
     (void)sim;

@@ -115,6 +115,10 @@ int material_contact_task(Sim *sim, void *state, Seam seam);
  *         material_contact_work. */
 int material_contact_history(const Sim *sim, void *state, FILE *f, int header);
 
+/** @brief SEAM_ENERGY: the energy contact between bodies has dissipated
+ *         (friction), named "contact between bodies". */
+double material_contact_energy(const Sim *sim, void *state, const char **name);
+
 /** @brief Save or restore the contact's work and node count
  *         (SEAM_CHECKPOINT). */
 int material_contact_checkpoint(Sim *sim, void *state, FILE *f, int save);

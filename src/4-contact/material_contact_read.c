@@ -177,6 +177,7 @@ int material_contact_read(Sim *sim, const config_setting_t *s, int index,
             hooks_on_step(h, SEAM_TASK4_CONTACT, material_contact_task, M) ||
             hooks_on_step(h, SEAM_TASK6_CONTACT, material_contact_task, M) ||
             hooks_on_history(h, material_contact_history, M) ||
+            hooks_on_energy(h, material_contact_energy, M) ||
             hooks_on_checkpoint(h, material_contact_checkpoint, M))
             rc = scene_error(r, s, "contact", "too many subscribers to the "
                              "step's seams");

@@ -8,8 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "crack_contact.h"
-#include "material_contact.h"
 #include "step.h"
 
 static void energy_balance_release(void *state)
@@ -123,29 +121,36 @@ EnergyTerms energy_balance_terms(const Sim *sim, const EnergyBalance *B)
     e.in = B->e0 + B->w_ext;
     e.stored = t.kinetic + t.strain;
     e.damping = B->w_damp;
-    e.contact = 0;
-    const ContactState *C = sim_state(sim, "crack contact");
-    const MaterialContact *M = sim_state(sim, "material contact");
-    if (C)
-        e.contact -= C->work;                  /* work <= 0: dissipated */
-    if (M)
-        e.contact -= M->work;
-    e.error = e.in - e.stored - e.damping - e.contact;
+    e.dissipated = 0;                          /* every stage's, by the seam */
+    const SeamList *l = &sim->hooks.seam[SEAM_ENERGY];
+    for (int k = 0; k < l->n; k++) {
+        const char *name;
+        e.dissipated += l->at[k].fn.energy(sim, l->at[k].state, &name);
+    }
+    e.error = e.in - e.stored - e.damping - e.dissipated;
     return e;
 }
 
 /// [energy_balance_report]
 int energy_balance_report(const Sim *sim, void *state, FILE *f)
 {
-    EnergyTerms e = energy_balance_terms(sim, state);
+    const EnergyBalance *B = state;
+    EnergyTerms e = energy_balance_terms(sim, B);
     double scale = e.in != 0.0 ? e.in : 1.0;
     const Units *u = sim->scene.run.units;
-    return fprintf(f, "mpm: energy (%s) at t = %.6g %s: in %.9g (start %.9g, "
-                   "external work %.9g) = stored %.9g + damping %.9g + "
-                   "contact %.9g + error %.9g (%+.4f %% of in)\n", u->energy,
-                   sim->t, u->time, e.in, ((const EnergyBalance *)state)->e0, e.in -
-                   ((const EnergyBalance *)state)->e0, e.stored, e.damping,
-                   e.contact, e.error, 100.0 * e.error / scale) < 0 ? -1 : 0;
+    int bad = fprintf(f, "mpm: energy (%s) at t = %.6g %s: in %.9g (start %.9g, "
+                      "external work %.9g) = stored %.9g + damping %.9g", u->energy,
+                      sim->t, u->time, e.in, B->e0, e.in - B->e0, e.stored,
+                      e.damping) < 0;
+    const SeamList *l = &sim->hooks.seam[SEAM_ENERGY];  /* each stage's term */
+    for (int k = 0; k < l->n; k++) {
+        const char *name;
+        double w = l->at[k].fn.energy(sim, l->at[k].state, &name);
+        bad |= fprintf(f, " + %s %.9g", name, w) < 0;
+    }
+    bad |= fprintf(f, " + error %.9g (%+.4f %% of in)\n", e.error,
+                   100.0 * e.error / scale) < 0;
+    return bad ? -1 : 0;
 }
 /// [energy_balance_report]
 

@@ -2,8 +2,9 @@
  * @file energy_balance.h
  * @brief The energy bookkeeping of a run (stage 5): what came in (the
  *        initial energy and the work of gravity and point loads), what is
- *        stored (kinetic + strain) and what was dissipated (damping,
- *        contact friction); what is left over is the scheme's error.
+ *        stored (kinetic + strain) and what was dissipated (damping, and
+ *        what each stage reports through SEAM_ENERGY: contact friction);
+ *        what is left over is the scheme's error.
  */
 #ifndef MPM_ENERGY_BALANCE_H
 #define MPM_ENERGY_BALANCE_H
@@ -29,8 +30,9 @@ typedef struct EnergyTerms {
     double in;          /**< e0 + w_ext */
     double stored;      /**< kinetic + strain now */
     double damping;     /**< dissipated by damping */
-    double contact;     /**< dissipated by contact (friction), >= 0 */
-    double error;       /**< in - stored - damping - contact */
+    double dissipated;  /**< taken out by the stages (SEAM_ENERGY: contact
+                             friction), >= 0 */
+    double error;       /**< in - stored - damping - dissipated */
 } EnergyTerms;
 
 /** @brief Attach the account to @p sim and subscribe its hooks (the
