@@ -13,8 +13,8 @@
 static void energy_balance_release(void *state)
 {
     EnergyBalance *B = state;
-    free(B->vx);
-    free(B->vy);
+    free(B->x);
+    free(B->y);
     free(B);
 }
 
@@ -42,15 +42,15 @@ int energy_balance_prepare(Sim *sim, void *state, char *err, size_t errlen)
         return -1;
     }
     if (per_step) {
-        B->vx = malloc((size_t)(n > 0 ? n : 1) * sizeof(double));
-        B->vy = malloc((size_t)(n > 0 ? n : 1) * sizeof(double));
-        if (!B->vx || !B->vy ||
+        B->x = malloc((size_t)(n > 0 ? n : 1) * sizeof(double));
+        B->y = malloc((size_t)(n > 0 ? n : 1) * sizeof(double));
+        if (!B->x || !B->y ||
             hooks_on_step(&sim->hooks, SEAM_TASK7, energy_balance_step, B)) {
             snprintf(err, errlen, "%s: out of memory (energy balance)", sc->file);
             return -1;
         }
-        memcpy(B->vx, sim->pts.vx, (size_t)n * sizeof(double));
-        memcpy(B->vy, sim->pts.vy, (size_t)n * sizeof(double));
+        memcpy(B->x, sim->pts.x, (size_t)n * sizeof(double));
+        memcpy(B->y, sim->pts.y, (size_t)n * sizeof(double));
     }
     if (hooks_on_report(&sim->hooks, energy_balance_report, B) ||
         hooks_on_checkpoint(&sim->hooks, energy_balance_checkpoint, B)) {
@@ -71,7 +71,7 @@ int energy_balance_step(Sim *sim, void *state, Seam seam)
     double dt = sim->dt, wg = 0, wl = 0;
     double gs = gravity_scale(run, sim->t + 0.5 * dt);  /* as the step used */
     const Scene *sc = &sim->scene;
-    for (int l = 0; l < sc->nloads; l++) {          /* before B->v moves on */
+    for (int l = 0; l < sc->nloads; l++) {          /* before B->x moves on */
         const Load *L = &sc->loads[l];
         if (L->count == 0)
             continue;
@@ -79,16 +79,16 @@ int energy_balance_step(Sim *sim, void *state, Seam seam)
         load_point_force(L, sim->t, &fx, &fy);
         for (int k = 0; k < L->count; k++) {
             int p = L->points[k];
-            wl += fx * 0.5 * (B->vx[p] + P->vx[p]) + fy * 0.5 * (B->vy[p] + P->vy[p]);
+            wl += fx * (P->x[p] - B->x[p]) + fy * (P->y[p] - B->y[p]);
         }
     }
     for (int p = 0; p < P->n; p++) {
-        double mx = 0.5 * (B->vx[p] + P->vx[p]), my = 0.5 * (B->vy[p] + P->vy[p]);
-        wg += P->m[p] * (run->gx * gs * mx + run->gy * gs * my);
-        B->vx[p] = P->vx[p];
-        B->vy[p] = P->vy[p];
+        double ux = P->x[p] - B->x[p], uy = P->y[p] - B->y[p];
+        wg += P->m[p] * (run->gx * gs * ux + run->gy * gs * uy);
+        B->x[p] = P->x[p];
+        B->y[p] = P->y[p];
     }
-    B->w_ext += dt * (wg + wl);
+    B->w_ext += wg + wl;
     return 0;
 }
 /// [energy_balance_step]
@@ -166,9 +166,9 @@ int energy_balance_checkpoint(Sim *sim, void *state, FILE *f, int save)
         checkpoint_io(f, &B->w_ext, sizeof B->w_ext, save) ||
         checkpoint_io(f, &B->w_damp, sizeof B->w_damp, save))
         return -1;
-    if (!save && B->vx) {              /* Task 7 left them equal to the points' */
-        memcpy(B->vx, sim->pts.vx, (size_t)sim->pts.n * sizeof(double));
-        memcpy(B->vy, sim->pts.vy, (size_t)sim->pts.n * sizeof(double));
+    if (!save && B->x) {               /* Task 7 left them equal to the points' */
+        memcpy(B->x, sim->pts.x, (size_t)sim->pts.n * sizeof(double));
+        memcpy(B->y, sim->pts.y, (size_t)sim->pts.n * sizeof(double));
     }
     return 0;
 }

@@ -19,9 +19,9 @@ typedef struct EnergyBalance {
     double e0;       /**< kinetic + strain energy at the start */
     double w_ext;    /**< work of gravity and point loads so far */
     double w_damp;   /**< energy taken out by damping so far (>= 0) */
-    double *vx;      /**< per point: velocity x at the start of the step
+    double *x;       /**< per point: position x at the start of the step
                           (only when gravity or loads act) */
-    double *vy;      /**< per point: velocity y at the start of the step */
+    double *y;       /**< per point: position y at the start of the step */
 } EnergyBalance;
 /// [energy_balance_state]
 
@@ -44,8 +44,8 @@ int energy_balance_prepare(Sim *sim, void *state, char *err, size_t errlen);
 EnergyTerms energy_balance_terms(const Sim *sim, const EnergyBalance *B);
 
 /** @brief Task 7, each step: the work of gravity and point loads on the
- *         points over the step, from their velocities before and after it
- *         (the trapezoid rule). */
+ *         points over the step, each force times its point's displacement
+ *         (the force the step applied, the motion the step made). */
 int energy_balance_step(Sim *sim, void *state, Seam seam);
 
 /** @brief Task 4, each step when the scene has damping: the energy the
