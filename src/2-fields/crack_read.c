@@ -182,14 +182,26 @@ int cracks_prepare(Sim *sim, void *state, char *err, size_t errlen)
 {
     Cracks *C = state;
     const Scene *sc = &sim->scene;
-    /* an edge crack may start outside the body, but some point of every
-       crack must lie in a body */
+    /* an edge crack may start outside the body, and a crack may cut a
+       body through from outside to outside, but every crack must meet a
+       body: its segments are walked in steps of an eighth of a cell (a
+       body thinner than that holds no point anyway) */
+    double step = 0.125 * fmin(sim->grid.dx, sim->grid.dy);
     for (int k = 0; k < C->ncracks; k++) {
         const Crack *c = &C->crack[k];
         int inside = 0;
-        for (int j = 0; j < c->n && !inside; j++)
-            for (int b = 0; b < sc->nbodies && !inside; b++)
-                inside = shape_contains(&sc->bodies[b].shape, c->x[j], c->y[j]);
+        for (int j = 0; j < c->n && !inside; j++) {
+            double ex = j + 1 < c->n ? c->x[j + 1] - c->x[j] : 0.0;
+            double ey = j + 1 < c->n ? c->y[j + 1] - c->y[j] : 0.0;
+            double len = sqrt(ex * ex + ey * ey);
+            long n = len > 0 ? (long)ceil(len / step) : 0;
+            for (long i = 0; i <= n && !inside; i++) {
+                double f = n > 0 ? (double)i / (double)n : 0.0;
+                for (int b = 0; b < sc->nbodies && !inside; b++)
+                    inside = shape_contains(&sc->bodies[b].shape, c->x[j] + f * ex,
+                                            c->y[j] + f * ey);
+            }
+        }
         if (!inside) {
             char at[SCENE_AT_LEN];
             snprintf(err, errlen, "%s: cracks: crack %d lies outside every "

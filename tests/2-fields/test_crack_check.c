@@ -5,7 +5,10 @@
  *        lattice (so that segments touch, overlap and cross exactly),
  *        the same answer and the same first pair; and cracks of 100,000
  *        segments read through a scene, one that does not cross itself
- *        and one that does near its far end.
+ *        and one that does near its far end; a two-point crack that cuts
+ *        a body through, both ends outside it, is accepted (it was refused
+ *        as lying "outside every body"), and one that misses every body is
+ *        still refused.
  */
 #include "testkit.h"
 
@@ -174,12 +177,38 @@ static void long_crack_crossing_near_its_end_is_refused(void **state)
     free(p);
 }
 
+/** A block cut through by a crack from outside to outside: accepted; the
+ *  same crack moved off the block: refused. */
+static void crack_cutting_a_body_through(void **state)
+{
+    (void)state;
+    const char *fmt =
+        "grid = { origin = [0.0, 0.0]; cells = [10, 10]; cell_size = [1.0, 1.0]; };\n"
+        "run = { time = 0.1; snapshots = 0; };\n"
+        "materials = ( { name = \"m\"; E = 1.0; nu = 0.3; rho = 1.0e-3; } );\n"
+        "bodies = ( { material = \"m\"; rectangle = { min = [2.0, 2.0]; max = [8.0, 8.0]; }; } );\n"
+        "cracks = ( { points = ( [1.0, %s], [9.0, %s] ); } );\n";
+    char text[1024], err[512];
+    snprintf(text, sizeof text, fmt, "5.2", "5.2");
+    Sim *sim = tk_load_with(text, NULL, NULL, err, sizeof err);
+    if (!sim)
+        fail_msg("a crack cutting the block through was refused: %s", err);
+    assert_int_equal(cracks_of(sim)->ncracks, 1);
+    tk_free(sim);
+    snprintf(text, sizeof text, fmt, "9.5", "9.5");
+    sim = tk_load_with(text, NULL, NULL, err, sizeof err);
+    assert_null(sim);
+    printf("  a crack above the block: %s\n", err);
+    assert_non_null(strstr(err, "lies outside every body"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(binned_check_equals_every_pair),
         cmocka_unit_test(long_zigzag_is_accepted),
         cmocka_unit_test(long_crack_crossing_near_its_end_is_refused),
+        cmocka_unit_test(crack_cutting_a_body_through),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
