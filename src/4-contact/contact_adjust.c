@@ -43,6 +43,8 @@ int contact_pair_detected(const Grid *g, int a, int b, const double n[2],
         return contact_detected(vrel, law->vsep, law->vcontact, dvn);
     case DETECT_GAP:                         /* the gap at the step's end */
         return dvn > 0.0 && gap - dt * dvn <= law->gap_tolerance;
+    case DETECT_OPENING:                     /* the opening at the step's end */
+        return dvn > 0.0 && gap - dt * dvn <= 0.0;
     default:
         return dvn > 0.0;                    /* approach alone */
     }

@@ -19,7 +19,9 @@ static int read_detection(SceneReader *r, const config_setting_t *s, int crack,
         return -1;
     const config_setting_t *at = config_setting_get_member(s, "detection");
     if (!rule)
-        out->detect = crack || has_volume ? DETECT_VOLUME : DETECT_GAP;
+        out->detect = has_volume ? DETECT_VOLUME : crack ? DETECT_OPENING : DETECT_GAP;
+    else if (strcmp(rule, "opening") == 0 && crack)
+        out->detect = DETECT_OPENING;
     else if (strcmp(rule, "volume") == 0)
         out->detect = DETECT_VOLUME;
     else if (strcmp(rule, "approach") == 0)
@@ -28,9 +30,9 @@ static int read_detection(SceneReader *r, const config_setting_t *s, int crack,
         out->detect = DETECT_GAP;
     else
         return scene_error(r, at, "detection", "\"%s\": expected %s", rule,
-                           crack ? "\"volume\" or \"approach\" (a crack's "
-                           "faces have no gap estimate yet)" :
-                           "\"gap\", \"volume\" or \"approach\"");
+                           crack ? "\"opening\", \"volume\" or \"approach\"" :
+                           "\"gap\", \"volume\" or \"approach\" (\"opening\" "
+                           "is a crack's)");
     if (has_volume && out->detect != DETECT_VOLUME)
         return scene_error(r, at, "detection", "\"%s\" ignores V_sep and "
                            "V_contact (they belong to \"volume\")", rule);

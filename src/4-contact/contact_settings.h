@@ -29,7 +29,10 @@ typedef enum ContactDetection {
                               from the fields' points (bodies' default) */
     DETECT_VOLUME,       /**< the paper's relative volume (eq. 10-12) and
                               approach (cracks' default) */
-    DETECT_APPROACH      /**< approach alone (fires at a distance) */
+    DETECT_APPROACH,     /**< approach alone (fires at a distance) */
+    DETECT_OPENING       /**< approach and a crack opening <= 0, the
+                              opening from the two sides' displacements
+                              (cracks' default) */
 } ContactDetection;
 
 /// [contact_law_settings]
@@ -52,10 +55,12 @@ typedef struct ContactLaw {
  *        are not checked here (the caller knows its other keys).
  * @param r            the scene reader (messages name file and line)
  * @param s            the group
- * @param crack        1: a crack's contact (detection "volume" or
- *                     "approach", default "volume", V_sep 0.9 and V_contact
- *                     1.1); 0: a pair of bodies (default "gap", or "volume"
- *                     when V_sep or V_contact is given)
+ * @param crack        1: a crack's contact (detection "opening",
+ *                     "volume" or "approach"; default "opening", or
+ *                     "volume" when V_sep or V_contact is given, with 0.9
+ *                     and 1.1 for the one not given); 0: a pair of bodies
+ *                     ("gap", "volume" or "approach"; default "gap", or
+ *                     "volume" when V_sep or V_contact is given)
  * @param out          the law read
  * @return 0, or -1 with a message in @p r.
  */
@@ -83,7 +88,8 @@ double contact_adjust(Grid *g, int a, int b, const double n[2],
  * @param n    unit normal from a to b
  * @param vrel relative nodal volume (DETECT_VOLUME)
  * @param gap  the surfaces' separation along @p n at the start of the step
- *             (DETECT_GAP; negative: overlap)
+ *             (DETECT_GAP; negative: overlap), or the crack's opening
+ *             (DETECT_OPENING)
  * @param dt   the step: at Task 4 (@p dt > 0) the gap the end of the step
  *             would have, gap - dt (v_a - v_b) . n, is tested; 0 at Task 2
  * @param law  the pair's law

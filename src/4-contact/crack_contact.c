@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "checkpoint.h"
 #include "crack_contact.h"
@@ -24,6 +25,20 @@ int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     if (fields_want_normals(sim) || !S->vnode || !S->held) {
         snprintf(err, errlen, "%s: out of memory for crack contact", sc->file);
         return -1;
+    }
+    for (int k = 0; k < S->ncracks; k++)
+        S->opening |= S->crack[k].law.kind != CONTACT_NONE &&
+                      S->crack[k].law.detect == DETECT_OPENING;
+    if (S->opening) {                        /* the faces start closed */
+        size_t n = (size_t)(sim->pts.n > 0 ? sim->pts.n : 1);
+        S->x0 = malloc(n * sizeof(double));
+        S->y0 = malloc(n * sizeof(double));
+        if (!S->x0 || !S->y0) {
+            snprintf(err, errlen, "%s: out of memory for crack contact", sc->file);
+            return -1;
+        }
+        memcpy(S->x0, sim->pts.x, (size_t)sim->pts.n * sizeof(double));
+        memcpy(S->y0, sim->pts.y, (size_t)sim->pts.n * sizeof(double));
     }
     /* eq. 10: the undeformed cell volume, with the thickness of the body
        the crack lies in (cracks_prepare found one holding a crack point) */
@@ -49,17 +64,42 @@ static void add_slot_normal(const Sim *sim, int s, double *nx, double *ny)
     *ny += F->ny[e];
 }
 
+/** Room for the per-slot displacement sums (grown with the grid's slots). */
+static int reserve_slots(Sim *sim, ContactState *S)
+{
+    int cap = sim->grid.capacity;
+    if (cap <= S->cap)
+        return 0;
+    double *x = realloc(S->ux, sizeof(double) * (size_t)cap);
+    if (x)
+        S->ux = x;
+    double *y = realloc(S->uy, sizeof(double) * (size_t)cap);
+    if (y)
+        S->uy = y;
+    if (!x || !y)
+        return step_fail(sim, 0, "memory for crack openings", cap);
+    S->cap = cap;
+    return 0;
+}
+
 /// [node_volumes]
 /** Eq. 8-9 at the nodes that carry extra fields this step (the only ones
  *  where contact is possible): V_i = sum_p V_p S_ip with the current point
- *  volume V_p = (1 + e_xx)(1 + e_yy) m_p / rho_p. A point none of whose
- *  nodes has extra fields costs four integer tests. */
-static void node_volumes(Sim *sim, ContactState *S)
+ *  volume V_p = (1 + e_xx)(1 + e_yy) m_p / rho_p; and, for the opening
+ *  rule, each field's sum_p m_p S_ip u_p of the points' displacements. A
+ *  point none of whose nodes has extra fields costs four integer tests. */
+static int node_volumes(Sim *sim, ContactState *S)
 {
     const FieldTable *F = &sim->fields;
     const Particles *P = &sim->pts;
-    for (int k = 0; k < F->ntouched; k++)
+    const Grid *g = &sim->grid;
+    if (S->opening && reserve_slots(sim, S))
+        return -1;
+    for (int k = 0; k < F->ntouched; k++) {
         S->vnode[F->touched[k]] = 0.0;
+        for (int s = F->touched[k]; s >= 0 && S->opening; s = field_next(F, g, s))
+            S->ux[s] = S->uy[s] = 0.0;
+    }
     for (int p = 0; p < P->n; p++) {
         int node[STENCIL_NODES], near = 0;
         stencil_nodes(sim, p, node);
@@ -70,10 +110,18 @@ static void node_volumes(Sim *sim, ContactState *S)
         Stencil st;
         stencil_of_point(sim, p, &st);
         double v = (1.0 + P->exx[p]) * (1.0 + P->eyy[p]) * P->vol[p];
+        double mux = S->opening ? P->m[p] * (P->x[p] - S->x0[p]) : 0.0;
+        double muy = S->opening ? P->m[p] * (P->y[p] - S->y0[p]) : 0.0;
         for (int a = 0; a < STENCIL_NODES; a++)
-            if (F->first[node[a]] >= 0)
+            if (F->first[node[a]] >= 0) {
                 S->vnode[node[a]] += v * st.S[a];
+                if (S->opening) {
+                    S->ux[st.slot[a]] += mux * st.S[a];
+                    S->uy[st.slot[a]] += muy * st.S[a];
+                }
+            }
     }
+    return 0;
 }
 /// [node_volumes]
 
@@ -90,13 +138,18 @@ static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
     if (!cc || cc->law.kind == CONTACT_NONE || !(len > 0))
         return;
     double n[2] = {nx / len, ny / len};
+    double opening = 0.0;                    /* b's displacement less a's, along n */
+    if (cc->law.detect == DETECT_OPENING)
+        opening = (S->ux[b] / g->m[b] - S->ux[a] / g->m[a]) * n[0] +
+                  (S->uy[b] / g->m[b] - S->uy[a] / g->m[a]) * n[1];
     unsigned bit = S->pair < 32 ? 1u << S->pair : 0u;
     S->pair++;
     if (S->seam == SEAM_TASK6_CONTACT) {     /* the step's decision */
         if (!(S->held[S->node] & bit))
             return;
-    } else if (!contact_pair_detected(g, a, b, n, vnode / cc->vcell, 0.0,
-                                       0.0, &cc->law)) {
+    } else if (!contact_pair_detected(g, a, b, n, vnode / cc->vcell, opening,
+                                       S->seam == SEAM_TASK4_CONTACT ? sim->dt : 0.0,
+                                       &cc->law)) {
         return;
     } else if (S->seam == SEAM_TASK4_CONTACT) {
         S->held[S->node] |= bit;
@@ -147,7 +200,8 @@ int crack_contact_task(Sim *sim, void *state, Seam seam)
     unsigned side_mask = 3u << C->side_shift;
     if (seam == SEAM_TASK2_CONTACT) {        /* a new step */
         S->nodes = 0;
-        node_volumes(sim, S);
+        if (node_volumes(sim, S))
+            return -1;
     }
     S->task_nodes = 0;
     for (int k = 0; k < F->ntouched; k++) {
@@ -195,8 +249,10 @@ double crack_contact_energy(const Sim *sim, void *state, const char **name)
 
 int crack_contact_checkpoint(Sim *sim, void *state, FILE *f, int save)
 {
-    (void)sim;
     ContactState *S = state;
+    size_t n = (size_t)sim->pts.n * sizeof(double);
     return checkpoint_io(f, &S->work, sizeof S->work, save) ||
-           checkpoint_io(f, &S->nodes, sizeof S->nodes, save) ? -1 : 0;
+           checkpoint_io(f, &S->nodes, sizeof S->nodes, save) ||
+           (S->opening && (checkpoint_io(f, S->x0, n, save) ||
+                           checkpoint_io(f, S->y0, n, save))) ? -1 : 0;
 }

@@ -25,6 +25,14 @@ typedef struct ContactState {
     int ncracks;          /**< entries of crack */
     CrackContact *crack;  /**< per crack */
     double *vnode;        /**< per node: volume V_i (eq. 8), at touched nodes */
+    int opening;          /**< a crack detects by its opening: x0, y0, ux,
+                               uy are kept */
+    double *x0;           /**< per point: its position at the start */
+    double *y0;           /**< per point: y at the start */
+    double *ux;           /**< per slot: sum_p m_p S_ip u_p, x (u_p = x_p -
+                               x0_p, at touched nodes) */
+    double *uy;           /**< per slot: the same, y */
+    int cap;              /**< slots of ux, uy */
     unsigned *held;       /**< per node: bit k set when its k-th pair of
                                fields was in contact at Task 4 (Task 6
                                keeps that decision) */
@@ -62,8 +70,8 @@ int crack_contact_history(const Sim *sim, void *state, FILE *f, int header);
  *         named "crack contact". */
 double crack_contact_energy(const Sim *sim, void *state, const char **name);
 
-/** @brief Save or restore the contact's work and node count
- *         (SEAM_CHECKPOINT). */
+/** @brief Save or restore the contact's work and node count, and the
+ *         points' start positions of the opening rule (SEAM_CHECKPOINT). */
 int crack_contact_checkpoint(Sim *sim, void *state, FILE *f, int save);
 
 /** @brief Release stage 4's crack-contact state. */

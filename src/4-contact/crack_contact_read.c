@@ -67,6 +67,10 @@ void crack_contact_release(void *state)
     ContactState *S = state;
     free(S->crack);
     free(S->vnode);
+    free(S->x0);
+    free(S->y0);
+    free(S->ux);
+    free(S->uy);
     free(S->held);
     free(S);
 }
