@@ -69,6 +69,7 @@ static const SameCase cases[] = {
     {"tests/4-contact/scenes/bars_gap.cfg", "0.1", 4},
     {"tests/4-contact/scenes/bars_touching.cfg", "0.1", 4},
     {"tests/4-contact/scenes/bars_impedance.cfg", "0.1", 4},
+    {"tests/5-usavg/scenes/block_to_rest.cfg", "0.5", 4},
 };
 
 /** Scenes of the repository that no earlier stage runs or that another
