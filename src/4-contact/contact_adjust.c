@@ -28,25 +28,3 @@ double contact_adjust(Grid *g, int a, int b, const double n[2],
            dp[1] * (g->py[a] / ma - g->py[b] / mb);
 }
 /// [contact_adjust]
-
-/// [contact_pair_detected]
-int contact_pair_detected(const Grid *g, int a, int b, const double n[2],
-                          double vrel, double gap, double dt,
-                          const ContactLaw *law)
-{
-    if (law->kind == CONTACT_BONDED)
-        return 1;
-    double dvn = (g->px[a] / g->m[a] - g->px[b] / g->m[b]) * n[0] +
-                 (g->py[a] / g->m[a] - g->py[b] / g->m[b]) * n[1];
-    switch (law->detect) {
-    case DETECT_VOLUME:
-        return contact_detected(vrel, law->vsep, law->vcontact, dvn);
-    case DETECT_GAP:                         /* the gap at the step's end */
-        return dvn > 0.0 && gap - dt * dvn <= law->gap_tolerance;
-    case DETECT_OPENING:                     /* the opening at the step's end */
-        return dvn > 0.0 && gap - dt * dvn <= 0.0;
-    default:
-        return dvn > 0.0;                    /* approach alone */
-    }
-}
-/// [contact_pair_detected]
