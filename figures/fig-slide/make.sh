@@ -4,8 +4,9 @@
 # (block 8 x 4 mm on a plate, gravity tilted by theta, cells of 1 and 0.5
 # mm) with SLIDE_TABLE set, so that each run writes its centre's slide s(t)
 # every step. Draws build/figures/fig-slide.png: s(t) for mu = 0 and 0.3 at
-# theta = 30 degrees on both grids against the exact parabolas
-# s = 1/2 |g| (sin theta - mu cos theta) t^2, and s / s_exact - 1 with the
+# theta = 30 degrees on both grids against the exact curves (gravity grown
+# over 4 ms, then s = 1/2 a (t^2 - 4 t + 16/3), a = |g| (sin theta - mu cos
+# theta)), and s / s_exact - 1 with the
 # test's 1 % band (over the times the test measures, t >= 0.4 T).
 # build/figures/fig-slide.txt: what the test printed (its pass or fail
 # included: the figure is drawn either way). About two seconds.
