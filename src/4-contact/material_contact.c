@@ -303,7 +303,9 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
     }
     M->task_nodes = 0;
     double cell = g->dx * g->dy;
-    double dt = seam == SEAM_TASK4_CONTACT ? sim->dt : 0.0;
+    /* Tasks 2 and 4 decide on the gap the step would end with (Task 6
+       keeps Task 4's decision) */
+    double dt = seam == SEAM_TASK6_CONTACT ? 0.0 : sim->dt;
     for (int k = 0; k < F->ntouched; k++) {
         int n = F->touched[k], adjusted = 0, pair = 0;
         double vrel = M->area[n] / cell;        /* eq. 10, per unit thickness */
