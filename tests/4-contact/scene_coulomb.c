@@ -24,7 +24,7 @@
  * shear tau - mu sigma_n, so net slip(mu) / net slip(0) = 1 - mu / tan
  * theta = 1 - mu. Measured (printed by this test):
  *   mu = 0.4: 0.667 on 1 mm cells, 0.626 on 0.5 mm (LEFM 0.6)
- *   mu = 0.7: 0.343 on 1 mm cells, 0.312 on 0.5 mm (LEFM 0.3)
+ *   mu = 0.7: 0.344 on 1 mm cells, 0.312 on 0.5 mm (LEFM 0.3)
  * (the crack detecting by its opening, stage 4's default; with the volume
  * rule 0.671, 0.621 and 0.353, 0.309)
  * The error falls about 3.4 times as the cell halves; the test asks 0.1 on
