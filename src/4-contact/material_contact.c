@@ -126,6 +126,20 @@ static double point_size(const Sim *sim, int p, double half[2])
     return sx * sy * P->vol[p] / b->thickness;
 }
 
+/** Is point @p p in a cell beside a node with several fields? If so, its
+ *  nodes, stencil, half sizes and area. */
+static int point_near(const Sim *sim, const MaterialContact *M, int p,
+                      int node[STENCIL_NODES], Stencil *st, double half[2],
+                      double *area)
+{
+    if (!M->near[sim->pts.cell[p]])
+        return 0;
+    *area = point_size(sim, p, half);
+    stencil_nodes(sim, p, node);
+    stencil_of_point(sim, p, st);
+    return 1;
+}
+
 /// [mass_gradients]
 /** Task 2, first pass: at the nodes with several fields, each field's mass
  *  gradient sum_p m_p grad S_ip and area sum_p A_p S_ip. A point in a cell
@@ -135,13 +149,11 @@ static void mass_gradients(Sim *sim, MaterialContact *M)
     const FieldTable *F = &sim->fields;
     const Particles *P = &sim->pts;
     for (int p = 0; p < P->n; p++) {
-        if (!M->near[P->cell[p]])
-            continue;
         int node[STENCIL_NODES];
         Stencil st;
-        double half[2], area = point_size(sim, p, half), mp = P->m[p];
-        stencil_nodes(sim, p, node);
-        stencil_of_point(sim, p, &st);
+        double half[2], area, mp = P->m[p];
+        if (!point_near(sim, M, p, node, &st, half, &area))
+            continue;
         for (int a = 0; a < STENCIL_NODES; a++)
             if (F->first[node[a]] >= 0) {
                 M->gx[st.slot[a]] += mp * st.Gx[a];
@@ -191,14 +203,11 @@ static void interface_reach(Sim *sim, MaterialContact *M)
     const FieldTable *F = &sim->fields;
     const Particles *P = &sim->pts;
     for (int p = 0; p < P->n; p++) {
-        if (!M->near[P->cell[p]])
-            continue;
         int node[STENCIL_NODES];
         Stencil st;
-        double half[2];
-        point_size(sim, p, half);
-        stencil_nodes(sim, p, node);
-        stencil_of_point(sim, p, &st);
+        double half[2], area;
+        if (!point_near(sim, M, p, node, &st, half, &area))
+            continue;
         for (int a = 0; a < STENCIL_NODES; a++) {
             int n = node[a], s = st.slot[a];
             if (F->first[n] < 0 || st.S[a] <= 0.0)

@@ -60,7 +60,6 @@
  */
 #include "testkit.h"
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -74,55 +73,9 @@ static const char *const SCHEMES[NSCHEMES] = {"usl", "musl", "usf", "usavg"};
 #define NCFL 3
 static const double CFL[NCFL] = {0.5, 0.25, 0.1};
 
-/** Failed bounds of one test, printed as they are found. */
-typedef struct Checks {
-    int run, failed;
-} Checks;
+/** Count bound @p ok of @p c, printing it indented when it fails. */
+#define check(c, ok, ...) tk_bound((c), 6, (ok), __VA_ARGS__)
 
-static void check(Checks *c, int ok, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-
-/** Count a bound; print it with FAIL when it does not hold. */
-static void check(Checks *c, int ok, const char *fmt, ...)
-{
-    c->run++;
-    if (ok)
-        return;
-    c->failed++;
-    va_list ap;
-    va_start(ap, fmt);
-    printf("      FAIL: ");
-    vprintf(fmt, ap);
-    printf("\n");
-    va_end(ap);
-}
-
-static void finish(const Checks *c)
-{
-    printf("  %d of %d bounds failed\n", c->failed, c->run);
-    fflush(stdout);
-    if (c->failed)
-        fail_msg("%d of %d bounds failed (FAIL lines above)", c->failed, c->run);
-}
-
-/** Load @p path with @p overrides (NULL-ended); NULL and the reason in
- *  @p err when it is refused. */
-static Sim *try_load(const char *path, const char *const *overrides, char *err,
-                     size_t errlen)
-{
-    Sim *sim = malloc(sizeof *sim);
-    assert_non_null(sim);
-    sim_init(sim);
-    mpm_install_stages(&sim->hooks);
-    int n = 0;
-    while (overrides && overrides[n])
-        n++;
-    if (sim_load_file(sim, path, n, (char *const *)overrides, err, errlen)) {
-        tk_free(sim);
-        return NULL;
-    }
-    return sim;
-}
 
 /** Does this build have run.update = @p scheme? Prints a line if not. */
 static int has_scheme(const char *scene, const char *scheme)
@@ -130,7 +83,7 @@ static int has_scheme(const char *scene, const char *scheme)
     char ov[64], err[1024];
     snprintf(ov, sizeof ov, "run.update=%s", scheme);
     const char *const overrides[] = {ov, NULL};
-    Sim *sim = try_load(scene, overrides, err, sizeof err);
+    Sim *sim = tk_try_load_file(scene, overrides, err, sizeof err);
     if (!sim) {
         printf("  %s: skipped, this build refuses it (%s)\n", scheme, err);
         return 0;
@@ -153,7 +106,7 @@ static void body_motion(const Particles *P, int b, double *m, double *v)
 }
 
 /** One run of @p scene with @p scheme at @p cfl, checked. */
-static void impact(Checks *c, const char *scene, const char *scheme, double cfl)
+static void impact(TkBounds *c, const char *scene, const char *scheme, double cfl)
 {
     char ov[2][64];
     snprintf(ov[0], sizeof ov[0], "run.update=%s", scheme);
@@ -246,7 +199,7 @@ static void impact(Checks *c, const char *scene, const char *scheme, double cfl)
 /** Every scheme this build has, at each cfl. */
 static void all_schemes(const char *scene)
 {
-    Checks c = {0, 0};
+    TkBounds c = {0, 0};
     printf("  %s\n", scene);
     for (int s = 0; s < NSCHEMES; s++) {
         if (!has_scheme(scene, SCHEMES[s]))
@@ -254,7 +207,7 @@ static void all_schemes(const char *scene)
         for (int k = 0; k < NCFL; k++)
             impact(&c, scene, SCHEMES[s], CFL[k]);
     }
-    finish(&c);
+    tk_bounds_finish(&c);
 }
 
 /** The bars stage 4 does not pass yet (issue 25 is open on them): every

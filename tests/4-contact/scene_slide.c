@@ -89,7 +89,6 @@
  */
 #include "testkit.h"
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -108,36 +107,8 @@ static const char *const SCENE = "tests/4-contact/scenes/slide.cfg";
 #define NTIMES 5
 static const double FRACTION[NTIMES] = {0.4, 0.55, 0.7, 0.85, 1.0};
 
-/** Failed bounds of one test, printed as they are found. */
-typedef struct Checks {
-    int run, failed;
-} Checks;
-
-static void check(Checks *c, int ok, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-
-/** Count a bound; print it with FAIL when it does not hold. */
-static void check(Checks *c, int ok, const char *fmt, ...)
-{
-    c->run++;
-    if (ok)
-        return;
-    c->failed++;
-    va_list ap;
-    va_start(ap, fmt);
-    printf("    FAIL: ");
-    vprintf(fmt, ap);
-    printf("\n");
-    va_end(ap);
-}
-
-static void finish(const Checks *c)
-{
-    printf("  %d of %d bounds failed\n", c->failed, c->run);
-    fflush(stdout);
-    if (c->failed)
-        fail_msg("%d of %d bounds failed (FAIL lines above)", c->failed, c->run);
-}
+/** Count bound @p ok of @p c, printing it indented when it fails. */
+#define check(c, ok, ...) tk_bound((c), 4, (ok), __VA_ARGS__)
 
 /** What one run measured. */
 typedef struct SlideRun {
@@ -322,7 +293,7 @@ static double slide_time(double theta, double mu)
 }
 
 /** Lift-off and stability of run @p r. */
-static void check_run(Checks *c, const SlideRun *r)
+static void check_run(TkBounds *c, const SlideRun *r)
 {
     printf("    %ld steps, %.2f s; highest centre above its start %+.3e mm = %+.3f %% "
            "of a cell\n", r->steps, r->seconds, r->rise, 100 * r->rise / r->h);
@@ -332,7 +303,7 @@ static void check_run(Checks *c, const SlideRun *r)
 }
 
 /** A sliding case on both grids: s within 1 % of the exact curve. */
-static void sliding(Checks *c, double theta, double mu)
+static void sliding(TkBounds *c, double theta, double mu)
 {
     const double cells[2] = {1.0, 0.5};
     double T = slide_time(theta, mu);
@@ -357,26 +328,26 @@ static void sliding(Checks *c, double theta, double mu)
 static void slides_at_30_degrees(void **state)
 {
     (void)state;
-    Checks c = {0, 0};
+    TkBounds c = {0, 0};
     sliding(&c, 30, 0.0);
-    finish(&c);
+    tk_bounds_finish(&c);
 }
 
 static void slides_at_30_degrees_mu_03(void **state)
 {
     (void)state;
-    Checks c = {0, 0};
+    TkBounds c = {0, 0};
     sliding(&c, 30, 0.3);
-    finish(&c);
+    tk_bounds_finish(&c);
 }
 
 static void slides_at_45_degrees(void **state)
 {
     (void)state;
-    Checks c = {0, 0};
+    TkBounds c = {0, 0};
     sliding(&c, 45, 0.0);
     sliding(&c, 45, 0.3);
-    finish(&c);
+    tk_bounds_finish(&c);
 }
 
 /** mu = 0.7 > tan 30: the interface slip below 0.1 % of the frictionless
@@ -384,7 +355,7 @@ static void slides_at_45_degrees(void **state)
 static void sticks_at_30_degrees_mu_07(void **state)
 {
     (void)state;
-    Checks c = {0, 0};
+    TkBounds c = {0, 0};
     const double cells[2] = {1.0, 0.5};
     double T = 2 * slide_time(30, 0.0);
     for (int g = 0; g < 2; g++) {
@@ -401,14 +372,14 @@ static void sticks_at_30_degrees_mu_07(void **state)
         }
         check_run(&c, &r);
     }
-    finish(&c);
+    tk_bounds_finish(&c);
 }
 
 /** No gravity, frictionless, the block at 1 % of the wave speed. */
 static void slides_freely(void **state)
 {
     (void)state;
-    Checks c = {0, 0};
+    TkBounds c = {0, 0};
     const double cells[2] = {1.0, 0.5};
     Sim *sim = tk_load_file(SCENE, NULL);
     double v0 = 0.01 * sim->scene.mat[sim->pts.mat[0]].wave;
@@ -433,7 +404,7 @@ static void slides_freely(void **state)
         check(&c, r.ydev <= 0.01 * cells[g], "h %.2f: centre moved %.3e mm in y "
               "(bound 1 %% of a cell)", cells[g], r.ydev);
     }
-    finish(&c);
+    tk_bounds_finish(&c);
 }
 
 int main(void)

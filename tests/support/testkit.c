@@ -3,6 +3,7 @@
  * @brief Helpers shared by the test programs.
  */
 #include <dirent.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,7 +41,8 @@ Sim *tk_load_with(const char *text, void (*plugin)(Hooks *h, void *arg),
     return sim;
 }
 
-Sim *tk_load_file(const char *path, const char *const *overrides)
+Sim *tk_try_load_file(const char *path, const char *const *overrides, char *err,
+                      size_t errlen)
 {
     Sim *sim = malloc(sizeof *sim);
     assert_non_null(sim);
@@ -49,10 +51,42 @@ Sim *tk_load_file(const char *path, const char *const *overrides)
     int n = 0;
     while (overrides && overrides[n])
         n++;
+    if (sim_load_file(sim, path, n, (char *const *)overrides, err, errlen)) {
+        tk_free(sim);
+        return NULL;
+    }
+    return sim;
+}
+
+Sim *tk_load_file(const char *path, const char *const *overrides)
+{
     char err[1024];
-    if (sim_load_file(sim, path, n, (char *const *)overrides, err, sizeof err))
+    Sim *sim = tk_try_load_file(path, overrides, err, sizeof err);
+    if (!sim)
         fail_msg("scene refused: %s", err);
     return sim;
+}
+
+void tk_bound(TkBounds *b, int indent, int ok, const char *fmt, ...)
+{
+    b->run++;
+    if (ok)
+        return;
+    b->failed++;
+    va_list ap;
+    va_start(ap, fmt);
+    printf("%*sFAIL: ", indent, "");
+    vprintf(fmt, ap);
+    printf("\n");
+    va_end(ap);
+}
+
+void tk_bounds_finish(const TkBounds *b)
+{
+    printf("  %d of %d bounds failed\n", b->failed, b->run);
+    fflush(stdout);
+    if (b->failed)
+        fail_msg("%d of %d bounds failed (FAIL lines above)", b->failed, b->run);
 }
 
 int tk_try_file(const char *path, char *err, size_t errlen)

@@ -40,6 +40,27 @@ Sim *tk_load_with(const char *text, void (*plugin)(Hooks *h, void *arg),
 /** @brief Load a scene file with "key=value" overrides (NULL-ended list). */
 Sim *tk_load_file(const char *path, const char *const *overrides);
 
+/** @brief As tk_load_file(), but a refused scene gives NULL and the reason
+ *         in @p err instead of failing the test. */
+Sim *tk_try_load_file(const char *path, const char *const *overrides, char *err,
+                      size_t errlen);
+
+/** The bounds a benchmark test checked, and how many failed: every bound
+ *  is checked and printed before the test fails, so one run shows them
+ *  all. */
+typedef struct TkBounds {
+    int run;     /**< bounds checked */
+    int failed;  /**< of them failed */
+} TkBounds;
+
+/** @brief Count a bound; print "FAIL: ..." (after @p indent spaces) when
+ *         @p ok is 0. */
+void tk_bound(TkBounds *b, int indent, int ok, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
+/** @brief Print how many bounds failed; fail the test if any did. */
+void tk_bounds_finish(const TkBounds *b);
+
 /** @brief Try to load a scene file; return 0 or non-zero, message in err. */
 int tk_try_file(const char *path, char *err, size_t errlen);
 
