@@ -259,18 +259,19 @@ static int interface_geometry(Sim *sim, MaterialContact *M)
 
 /// [pair_axis]
 /** The normal @p n (from a to b) and the gap of fields @p a and @p b at
- *  node @p node: of the candidate directions, each turned to point from a
- *  to b (as g_a - g_b does), the one along which the two fields' points
- *  lie farthest apart (for convex bodies the separation is the largest
- *  gap over all directions, the separating-axis theorem).
- *  @return 0 when no candidate exists. */
+ *  node @p node: for a pair that detects by a gap, of the candidate
+ *  directions, each turned to point from a to b (as g_a - g_b does), the
+ *  one along which the two fields' points lie farthest apart (for convex
+ *  bodies the separation is the largest gap over all directions, the
+ *  separating-axis theorem); for the other rules, the average of
+ *  contact_interface_normal(). @return 0 when no direction exists. */
 static int pair_axis(const MaterialContact *M, int node, int a, int b,
-                     double n[2], double *gap)
+                     const ContactLaw *law, double n[2], double *gap)
 {
     double ga[2] = {M->gx[a], M->gy[a]}, gb[2] = {M->gx[b], M->gy[b]}, ab[2];
     if (!contact_interface_normal(ga, gb, ab))
         return 0;                               /* which side is which: unknown */
-    if (!M->reach) {                            /* no pair detects by a gap */
+    if (law->detect != DETECT_GAP) {            /* the average, and no gap */
         n[0] = ab[0];
         n[1] = ab[1];
         *gap = 0.0;
@@ -333,7 +334,7 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
                 pair++;
                 const ContactLaw *law = material_law(M, ga, gb);
                 double nrm[2] = {0.0, 0.0}, gap = 0.0;
-                if (law->kind != CONTACT_BONDED && !pair_axis(M, n, a, b, nrm, &gap))
+                if (law->kind != CONTACT_BONDED && !pair_axis(M, n, a, b, law, nrm, &gap))
                     continue;
                 if (seam == SEAM_TASK6_CONTACT) {   /* the step's decision */
                     if (!(M->held[n] & bit))
