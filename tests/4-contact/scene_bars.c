@@ -105,8 +105,11 @@ static void body_motion(const Particles *P, int b, double *m, double *v)
     *v = q / mm;
 }
 
-/** One run of @p scene with @p scheme at @p cfl, checked. */
-static void impact(TkBounds *c, const char *scene, const char *scheme, double cfl)
+/** One run of @p scene with @p scheme at @p cfl, checked; @p all 0 checks
+ *  only what holds today (start, energy, momentum, stability) and prints
+ *  the rest. */
+static void impact(TkBounds *c, const char *scene, const char *scheme, double cfl,
+                   int all)
 {
     char ov[2][64];
     snprintf(ov[0], sizeof ov[0], "run.update=%s", scheme);
@@ -182,9 +185,11 @@ static void impact(TkBounds *c, const char *scene, const char *scheme, double cf
     check(c, travel <= 0.5 * h, "%s cfl %.2f: contact started at %.4f ms, t0 = %.4f "
           "ms: %.3f h of closing travel away (bound h/2)", scheme, cfl, t_start, t0,
           travel / h);
+    if (all)
     check(c, fabs(dur - tc) <= 0.05 * tc, "%s cfl %.2f: contact lasted %.4f ms, "
           "2L/c = %.4f ms (%+.2f %%, bound 5 %%)", scheme, cfl, dur, tc,
           100 * (dur / tc - 1));
+    if (all)
     check(c, fabs(u1 - e1) <= 0.02 * v0 && fabs(u2 - e2) <= 0.02 * v0, "%s cfl %.2f: "
           "rebound %+.5f, %+.5f; exact %+.5f, %+.5f (bound 2 %% of v0 = %.5f)", scheme,
           cfl, u1, u2, e1, e2, 0.02 * v0);
@@ -205,16 +210,15 @@ static void all_schemes(const char *scene)
         if (!has_scheme(scene, SCHEMES[s]))
             continue;
         for (int k = 0; k < NCFL; k++)
-            impact(&c, scene, SCHEMES[s], CFL[k]);
+            impact(&c, scene, SCHEMES[s], CFL[k], 1);
     }
     tk_bounds_finish(&c);
 }
 
 /** The bars stage 4 does not pass yet (issue 25 is open on them): every
  *  scheme rebounds about 6.5 % slow, contact lasts 5-11 % longer than
- *  2L/c, USF gains up to 8 % and USL goes unstable (MUSL keeps the energy
- *  within 0.06 %). They run, with the same bounds, only when CONTACT_OPEN
- *  is set. */
+ *  2L/c, USF gains up to 8 % and USL goes unstable (MUSL keeps the energy,
+ *  above). They run, with the same bounds, only when CONTACT_OPEN is set. */
 static int open_case(const char *what)
 {
     if (getenv("CONTACT_OPEN"))
@@ -247,9 +251,30 @@ static void impedances_one_to_two(void **state)
     all_schemes("tests/4-contact/scenes/bars_impedance.cfg");
 }
 
+/** What holds today, on the identical bars from a gap and touching: MUSL
+ *  at cfl 0.5, 0.25 and 0.1 starts contact within half a cell of closing
+ *  travel of the touch, keeps the energy within 1 % (cfl 0.5) and 0.5 %
+ *  (0.25, 0.1) and momentum to 1e-12, and stays stable (measured: -0.57 %
+ *  to +0.20 %; deciding Task 2 on the gap at the step's start lost 4.4 %).
+ *  Duration and rebound are printed (open). */
+static void musl_meets_at_touch_and_keeps_energy(void **state)
+{
+    (void)state;
+    const char *scenes[2] = {"tests/4-contact/scenes/bars_gap.cfg",
+                             "tests/4-contact/scenes/bars_touching.cfg"};
+    TkBounds c = {0, 0};
+    for (int k = 0; k < 2; k++) {
+        printf("  %s\n", scenes[k]);
+        for (int j = 0; j < NCFL; j++)
+            impact(&c, scenes[k], "musl", CFL[j], 0);
+    }
+    tk_bounds_finish(&c);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(musl_meets_at_touch_and_keeps_energy),
         cmocka_unit_test(identical_bars_from_a_gap),
         cmocka_unit_test(identical_bars_touching),
         cmocka_unit_test(impedances_one_to_two),
