@@ -251,19 +251,22 @@ static void impedances_one_to_two(void **state)
     all_schemes("tests/4-contact/scenes/bars_impedance.cfg");
 }
 
-/** What holds today, on the identical bars from a gap and touching: MUSL
+/** What holds today, on the identical bars from a gap and touching and on
+ *  the bars of impedances 1:2: MUSL
  *  at cfl 0.5, 0.25 and 0.1 starts contact within half a cell of closing
  *  travel of the touch, keeps the energy within 1 % (cfl 0.5) and 0.5 %
  *  (0.25, 0.1) and momentum to 1e-12, and stays stable (measured: -0.57 %
- *  to +0.20 %; deciding Task 2 on the gap at the step's start lost 4.4 %).
+ *  to +0.20 % for the identical bars, -0.10 % to +0.16 % for 1:2; deciding
+ *  Task 2 on the gap at the step's start lost 4.4 %, and 25-48 % for 1:2).
  *  Duration and rebound are printed (open). */
 static void musl_meets_at_touch_and_keeps_energy(void **state)
 {
     (void)state;
-    const char *scenes[2] = {"tests/4-contact/scenes/bars_gap.cfg",
-                             "tests/4-contact/scenes/bars_touching.cfg"};
+    const char *scenes[3] = {"tests/4-contact/scenes/bars_gap.cfg",
+                             "tests/4-contact/scenes/bars_touching.cfg",
+                             "tests/4-contact/scenes/bars_impedance.cfg"};
     TkBounds c = {0, 0};
-    for (int k = 0; k < 2; k++) {
+    for (int k = 0; k < 3; k++) {
         printf("  %s\n", scenes[k]);
         for (int j = 0; j < NCFL; j++)
             impact(&c, scenes[k], "musl", CFL[j], 0);
