@@ -28,7 +28,7 @@ typedef enum ContactDetection {
     DETECT_GAP,          /**< approach and a gap <= gap_tolerance, the gap
                               from the fields' points (bodies' default) */
     DETECT_VOLUME,       /**< the paper's relative volume (eq. 10-12) and
-                              approach (cracks' default) */
+                              approach (chosen by V_sep or V_contact) */
     DETECT_APPROACH,     /**< approach alone (fires at a distance) */
     DETECT_OPENING       /**< approach and a crack opening <= 0, the
                               opening from the two sides' displacements
@@ -50,8 +50,8 @@ typedef struct ContactLaw {
 
 /**
  * @brief Read a law from group @p s: law = "frictionless" | "friction"
- *        (with mu >= 0) | "stick"; detection = "gap" | "volume" |
- *        "approach"; gap_tolerance; V_sep, V_contact. The keys of @p s
+ *        (with mu >= 0) | "stick"; detection = "gap" | "opening" |
+ *        "volume" | "approach"; gap_tolerance; V_sep, V_contact. The keys of @p s
  *        are not checked here (the caller knows its other keys).
  * @param r            the scene reader (messages name file and line)
  * @param s            the group
@@ -90,8 +90,9 @@ double contact_adjust(Grid *g, int a, int b, const double n[2],
  * @param gap  the surfaces' separation along @p n at the start of the step
  *             (DETECT_GAP; negative: overlap), or the crack's opening
  *             (DETECT_OPENING)
- * @param dt   the step: at Task 4 (@p dt > 0) the gap the end of the step
- *             would have, gap - dt (v_a - v_b) . n, is tested; 0 at Task 2
+ * @param dt   the step: the gap the end of the step would have,
+ *             gap - dt (v_a - v_b) . n, is tested (Tasks 2 and 4 pass the
+ *             step; 0 tests the gap now)
  * @param law  the pair's law
  */
 int contact_pair_detected(const Grid *g, int a, int b, const double n[2],

@@ -148,8 +148,7 @@ static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
         if (!(S->held[S->node] & bit))
             return;
     } else if (!contact_pair_detected(g, a, b, n, vnode / cc->vcell, opening,
-                                       S->seam == SEAM_TASK6_CONTACT ? 0.0 : sim->dt,
-                                       &cc->law)) {
+                                       sim->dt, &cc->law)) {  /* at the step's end */
         return;
     } else if (S->seam == SEAM_TASK4_CONTACT) {
         S->held[S->node] |= bit;

@@ -313,9 +313,6 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
     }
     M->task_nodes = 0;
     double cell = g->dx * g->dy;
-    /* Tasks 2 and 4 decide on the gap the step would end with (Task 6
-       keeps Task 4's decision) */
-    double dt = seam == SEAM_TASK6_CONTACT ? 0.0 : sim->dt;
     for (int k = 0; k < F->ntouched; k++) {
         int n = F->touched[k], adjusted = 0, pair = 0;
         double vrel = M->area[n] / cell;        /* eq. 10, per unit thickness */
@@ -339,7 +336,8 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
                 if (seam == SEAM_TASK6_CONTACT) {   /* the step's decision */
                     if (!(M->held[n] & bit))
                         continue;
-                } else if (!contact_pair_detected(g, a, b, nrm, vrel, gap, dt, law)) {
+                } else if (!contact_pair_detected(g, a, b, nrm, vrel, gap, sim->dt,
+                                                  law)) {   /* at the step's end */
                     continue;
                 } else if (seam == SEAM_TASK4_CONTACT) {
                     M->held[n] |= bit;
