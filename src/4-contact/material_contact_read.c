@@ -141,6 +141,12 @@ int material_contact_read(Sim *sim, const config_setting_t *s, int index,
         }
         rc = scene_check_keys(r, e, material_contact_keys) || read_pair(r, e, names) ||
              contact_law_read(r, e, 0, &read[k]);
+        double cell = sim->scene.dx < sim->scene.dy ? sim->scene.dx : sim->scene.dy;
+        if (!rc && read[k].detect == DETECT_GAP && !(read[k].gap_tolerance < cell))
+            rc = scene_error(r, config_setting_get_member(e, "gap_tolerance"),
+                             "gap_tolerance", "%g is not below the cell size %g: a "
+                             "gap that wide is contact at a distance (detection "
+                             "\"approach\" says so)", read[k].gap_tolerance, cell);
         for (int j = 0; j < 2 && !rc; j++) {
             gi[2 * k + j] = group_index(sim, M, names[j]);
             if (gi[2 * k + j] == 0)
