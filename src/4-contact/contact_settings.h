@@ -71,11 +71,23 @@ int contact_law_read(struct SceneReader *r, const config_setting_t *s,
  * @brief Change the momenta of fields (slots) @p a and @p b, found in
  *        contact, by @p law, with @p n the unit normal from a to b; b gets
  *        exactly minus a's change, so momentum is conserved to round-off.
- * @return the work of the change on the fields' relative velocity after
- *         it (zero for stick and frictionless, <= 0 with friction).
+ * @param dp  a's momentum change (out)
+ * @return 1 when the fields slide under friction (the change is not
+ *         stick's), else 0.
  */
-double contact_adjust(Grid *g, int a, int b, const double n[2],
-                      const ContactLaw *law);
+int contact_adjust(Grid *g, int a, int b, const double n[2],
+                   const ContactLaw *law, double dp[2]);
+
+/**
+ * @brief The work of the friction at Task 4: the tangential part of a's
+ *        momentum change @p dp on the relative velocity v_a - v_b the step
+ *        started from, (q - dt f) / m, with q the momenta before Task 4's
+ *        contact and f the forces of the update (zero for frictionless,
+ *        usually < 0). The velocity after the update is no measure: where
+ *        a field's mass is tiny, f dt / m is far above any point's speed.
+ */
+double contact_friction_work(const Grid *g, int a, int b, const double n[2],
+                             const double dp[2], double dt);
 
 /**
  * @brief Are fields @p a and @p b in contact? The approach velocity

@@ -153,9 +153,10 @@ static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
     } else if (S->seam == SEAM_TASK4_CONTACT) {
         S->held[S->node] |= bit;
     }
-    double w = contact_adjust(g, a, b, n, &cc->law);
-    if (S->seam == SEAM_TASK4_CONTACT)       /* the change the points get */
-        S->work += w;
+    double dp[2];
+    int slides = contact_adjust(g, a, b, n, &cc->law, dp);
+    if (S->seam == SEAM_TASK4_CONTACT && slides)       /* the change the points get */
+        S->work += contact_friction_work(g, a, b, n, dp, sim->dt);
     *adjusted = 1;
 }
 /// [contact_pair]

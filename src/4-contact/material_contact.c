@@ -342,9 +342,10 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
                 } else if (seam == SEAM_TASK4_CONTACT) {
                     M->held[n] |= bit;
                 }
-                double w = contact_adjust(g, a, b, nrm, law);
-                if (seam == SEAM_TASK4_CONTACT)  /* the change the points get */
-                    M->work += w;
+                double dp[2];
+                int slides = contact_adjust(g, a, b, nrm, law, dp);
+                if (seam == SEAM_TASK4_CONTACT && slides)  /* the change the points get */
+                    M->work += contact_friction_work(g, a, b, nrm, dp, sim->dt);
                 adjusted |= law->kind != CONTACT_BONDED;
             }
         }
