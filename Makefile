@@ -37,11 +37,18 @@ STAGES := $(foreach d,$(STAGE_DIRS),$(call stage_num,$(d)))
 # folders of stages 1..N
 upto = $(foreach d,$(1),$(if $(filter $(call stage_num,$(d)),$(wordlist 1,$(2),1 2 3 4 5 6 7 8 9)),$(d)))
 dirs_upto = $(call upto,$(STAGE_DIRS),$(1))
-# Stages 1-5 run the tests of their own and all earlier chapters.  Stage 6
-# (the meshfree method) adds a method beside MPM and builds on chapter 1
-# alone: it runs chapter 1's tests (scene reader, bad input, outputs) and its
-# own; chapters 2-5 are tested by their own stages.
-tests_upto = $(if $(filter 6 7 8 9,$(1)),$(sort $(wildcard tests/1-*) $(wildcard tests/$(1)-*)),$(call upto,$(sort $(wildcard tests/[1-9]-*)),$(1)))
+# Each thing is tested once: chapter K's tests run on stage K, the release
+# and the sanitizer build.  A later stage runs the same code on the same
+# scenes, and scene_same_numbers proves that its outputs are the same bytes.
+# A test that checks what later stages change runs there too: a folder's
+# file `later_stages` names its tests that every later stage runs, and its
+# file `also` the earlier chapters' tests that its own stage runs.
+TEST_DIRS := $(sort $(wildcard tests/[1-9]-*))
+listed = $(shell sed 's/\#.*//' $(1) 2>/dev/null)
+named = $(foreach f,$(2),$(if $(filter $(1),$(notdir $(f))),$(f)))
+tests_of = $(sort $(wildcard tests/$(1)-*/test_*.c tests/$(1)-*/scene_*.c) \
+             $(foreach d,$(call upto,$(TEST_DIRS),$(1)),$(patsubst %,$(d)/%.c,$(call listed,$(d)/later_stages))) \
+             $(foreach d,$(wildcard tests/$(1)-*),$(patsubst %,tests/%.c,$(call listed,$(d)/also))))
 
 # $(1) = release | asan, $(2) = stage number
 define STAGE_RULES
@@ -49,8 +56,8 @@ B_$(1)_$(2) := build/$(if $(filter asan,$(1)),asan/)stage$(2)
 INC_$(1)_$(2) := $$(addprefix -I,$$(call dirs_upto,$(2)))
 OBJ_$(1)_$(2) := $$(patsubst src/%.c,$$(B_$(1)_$(2))/obj/%.o,\
                    $$(foreach d,$$(call dirs_upto,$(2)),$$(wildcard $$(d)/*.c)))
-UNIT_$(1)_$(2) := $$(foreach d,$$(call tests_upto,$(2)),$$(wildcard $$(d)/test_*.c))
-SCENE_$(1)_$(2) := $$(if $$(filter release,$(1)),$$(foreach d,$$(call tests_upto,$(2)),$$(wildcard $$(d)/scene_*.c)))
+UNIT_$(1)_$(2) := $$(call named,test_%,$$(call tests_of,$(2)))
+SCENE_$(1)_$(2) := $$(if $$(filter release,$(1)),$$(call named,scene_%,$$(call tests_of,$(2))))
 SUPPORT_$(1)_$(2) := $$(patsubst tests/support/%.c,$$(B_$(1)_$(2))/tests/support/%.o,$$(wildcard tests/support/*.c))
 TESTS_$(1)_$(2) := $$(patsubst tests/%.c,$$(B_$(1)_$(2))/tests/%,$$(UNIT_$(1)_$(2)) $$(SCENE_$(1)_$(2)))
 
@@ -184,7 +191,8 @@ fuzz:
 	@FUZZ_SECONDS=$(FUZZ_SECONDS) FUZZ_JOBS=$(FUZZ_JOBS) bash tools/fuzz.sh
 
 # ---- tests -----------------------------------------------------------------
-# Every stage runs the tests of its own and all earlier chapters; the test
+# Each stage runs its chapter's tests (tests_of, above), in the release and
+# the sanitizer build, and the exercises run theirs; the test
 # programs run JOBS at a time (tools/run_tests.sh says how they keep apart).
 check: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) check-build
