@@ -39,21 +39,6 @@ static void add_point_loads(Sim *sim)
     }
 }
 
-/** Nodal volumes V_i = sum_p V_p S_ip with the current point volume
- *  V_p = (1 + e_xx)(1 + e_yy) V_p0 (eq. 8-9), for the stages that ask. */
-static void extrapolate_volumes(Sim *sim)
-{
-    const Particles *P = &sim->pts;
-    Grid *g = &sim->grid;
-    for (int p = 0; p < P->n; p++) {
-        Stencil st;
-        stencil_of_point(sim, p, &st);
-        double v = (1.0 + P->exx[p]) * (1.0 + P->eyy[p]) * P->vol[p];
-        for (int a = 0; a < STENCIL_NODES; a++)
-            g->vol[st.slot[a]] += v * st.S[a];
-    }
-}
-
 /// [extrapolate]
 void extrapolate(Sim *sim, unsigned what)
 {
@@ -82,8 +67,6 @@ void extrapolate(Sim *sim, unsigned what)
             }
         }
     }
-    if ((what & EXTRAP_MASS) && g->vol)
-        extrapolate_volumes(sim);
     if (what & EXTRAP_FORCE)
         add_point_loads(sim);
 }

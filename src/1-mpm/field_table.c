@@ -159,8 +159,6 @@ static int node_slot(Sim *sim, int n, unsigned key)
     int t = g->nslots++, e = t - g->nnodes;
     g->slot_node[e] = n;
     g->m[t] = g->px[t] = g->py[t] = g->fx[t] = g->fy[t] = 0.0;
-    if (g->vol)
-        g->vol[t] = 0.0;
     F->key[e] = key;
     F->next[e] = s;
     if (F->nx) {

@@ -10,7 +10,7 @@
 /** Addresses of every per-slot double array of @p g, optional ones too. */
 #define SLOT_ARRAYS(g) \
     { &(g)->m, &(g)->px, &(g)->py, &(g)->fx, &(g)->fy, &(g)->vx, &(g)->vy, \
-      &(g)->ax, &(g)->ay, &(g)->vol, &(g)->qx, &(g)->qy }
+      &(g)->ax, &(g)->ay, &(g)->qx, &(g)->qy }
 /** How many of SLOT_ARRAYS every grid has (the rest are optional). */
 #define SLOT_ARRAYS_ALWAYS 9
 
@@ -84,13 +84,11 @@ void grid_clear(Grid *g)
     memset(g->py, 0, bytes);
     memset(g->fx, 0, bytes);
     memset(g->fy, 0, bytes);
-    if (g->vol)
-        memset(g->vol, 0, bytes);
 }
 
 double grid_bytes(const Grid *g)
 {
-    double arrays = 9.0 + (g->vol != NULL) + (g->qx != NULL) + (g->qy != NULL);
+    double arrays = 9.0 + (g->qx != NULL) + (g->qy != NULL);
     return (double)g->capacity * arrays * sizeof(double)
          + (double)(g->capacity - g->nnodes + 1) * sizeof(int)
          + (double)g->nnodes;

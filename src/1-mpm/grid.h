@@ -6,7 +6,7 @@
  * A node owns one *slot* (its field 0).  Extra velocity fields (field_table.h)
  * append slots after the first @c nnodes; @c slot_node says to which node
  * each extra slot belongs.  Conventional MPM uses only the first @c nnodes
- * slots.  Arrays a stage asks for (nodal volume, momentum before contact)
+ * slots.  Arrays a stage asks for (the momentum before contact)
  * stay NULL otherwise.
  */
 #ifndef MPM_GRID_H
@@ -43,7 +43,6 @@ typedef struct Grid {
     double *vy;       /**< nodal y velocity per slot */
     double *ax;       /**< nodal x acceleration f/m per slot */
     double *ay;       /**< nodal y acceleration per slot */
-    double *vol;      /**< nodal volume per slot (eq. 8-9), when asked */
     double *qx;       /**< x momentum before Task 4's contact, when asked */
     double *qy;       /**< y momentum before Task 4's contact, when asked */
     unsigned char *fixed; /**< per node: GRID_FIX_X | GRID_FIX_Y */
@@ -67,8 +66,8 @@ int grid_init(Grid *g, double ox, double oy, double dx, double dy,
 /** @brief Make room for @p capacity slots (never shrinks). @return 0 or -1. */
 int grid_reserve(Grid *g, int capacity);
 
-/** @brief Allocate the optional per-slot array @p which (&g->vol, &g->qx,
- *         &g->qy), zeroed; it grows with the grid. @return 0 or -1. */
+/** @brief Allocate the optional per-slot array @p which (&g->qx or
+ *        &g->qy), zeroed; it grows with the grid. @return 0 or -1. */
 int grid_want(Grid *g, double **which);
 
 /** @brief Release the grid's arrays. */
