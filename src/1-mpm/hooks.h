@@ -46,6 +46,15 @@ typedef enum Seam {
     SEAM_COUNT           /**< number of seams */
 } Seam;
 
+/** The scene key whose reading subscribed (section "" for a top-level
+ *  one), and the line of its setting; key NULL: a subscriber not made by
+ *  a key (an installer's, or one a set-up subscriber adds). */
+typedef struct KeyAt {
+    const char *section;  /**< "cracks" of "cracks.contact", or "" */
+    const char *key;      /**< "contact" */
+    int line;             /**< line of the scene text (scene_lines_at()) */
+} KeyAt;
+
 /** A step seam's subscriber: non-zero (with Sim::fail filled) stops the run. */
 typedef int (*StepHook)(struct Sim *sim, void *state, Seam seam);
 /** A set-up subscriber: write a message and return non-zero to refuse. */
@@ -81,6 +90,7 @@ typedef struct Subscriber {
     } fn;                      /**< the function */
     void *state;               /**< passed back to it */
     int rank;                  /**< stage order of its installer */
+    KeyAt by;                  /**< the scene key that asked for it */
 } Subscriber;
 
 /** The subscribers of one seam, in stage order. */
@@ -155,6 +165,7 @@ typedef struct Hooks {
     int nfield_keys;                 /**< how many */
     SeamList seam[SEAM_COUNT];       /**< subscribers of each seam */
     int rank;                        /**< stage order of what is added now */
+    KeyAt reading;                   /**< the scene key read now, if any */
     int overflow;                    /**< -1 once a registry was full */
 } Hooks;
 /// [hooks]
@@ -162,6 +173,10 @@ typedef struct Hooks {
 /** @brief Mark what is registered or subscribed from now on as the
  *         @p rank-th stage's (stage order; stages.c alone calls it). */
 void hooks_begin_stage(Hooks *h, int rank);
+
+/** @brief Mark what is subscribed from now on as asked for by scene key
+ *         @p key (the scene reader calls it around a key's parser). */
+void hooks_begin_key(Hooks *h, KeyAt key);
 
 /** @brief Register a stress-update scheme. @return 0, or -1 when full. */
 int hooks_add_scheme(Hooks *h, const char *name, double before, double after,
