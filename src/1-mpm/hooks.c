@@ -14,6 +14,11 @@ void hooks_begin_stage(Hooks *h, int rank)
     h->rank = rank;
 }
 
+void hooks_begin_key(Hooks *h, KeyAt key)
+{
+    h->reading = key;
+}
+
 int hooks_add_scheme(Hooks *h, const char *name, double before, double after,
                      int reextrapolate)
 {
@@ -128,10 +133,14 @@ const UpdateScheme *hooks_find_scheme(const Hooks *h, const char *name)
 }
 
 /// [subscribe]
-/** Insert @p s into @p l after every subscriber of the same or an earlier
- *  stage: the list stays in stage order whenever a stage subscribes. */
-static int subscribe(SeamList *l, Subscriber s)
+/** Insert @p s into seam @p seam's list after every subscriber of the same
+ *  or an earlier stage: the list stays in stage order whenever a stage
+ *  subscribes. It carries the stage and the scene key being read now. */
+static int subscribe(Hooks *h, Seam seam, Subscriber s)
 {
+    SeamList *l = &h->seam[seam];
+    s.rank = h->rank;
+    s.by = h->reading;
     if (l->n == HOOKS_MAX)
         return -1;                  /* the caller reports it */
     int k = l->n;
@@ -147,46 +156,46 @@ static int subscribe(SeamList *l, Subscriber s)
 
 int hooks_on_step(Hooks *h, Seam seam, StepHook fn, void *state)
 {
-    Subscriber s = {.fn.step = fn, .state = state, .rank = h->rank};
+    Subscriber s = {.fn.step = fn, .state = state};
     if (seam < SEAM_TASK1_FIELDS || seam > SEAM_TASK7)
         return -1;
-    return subscribe(&h->seam[seam], s);
+    return subscribe(h, seam, s);
 }
 
 int hooks_on_prepare(Hooks *h, PrepareHook fn, void *state)
 {
-    Subscriber s = {.fn.prepare = fn, .state = state, .rank = h->rank};
-    return subscribe(&h->seam[SEAM_PREPARE], s);
+    Subscriber s = {.fn.prepare = fn, .state = state};
+    return subscribe(h, SEAM_PREPARE, s);
 }
 
 int hooks_on_snapshot(Hooks *h, SnapshotHook fn, void *state)
 {
-    Subscriber s = {.fn.snapshot = fn, .state = state, .rank = h->rank};
-    return subscribe(&h->seam[SEAM_SNAPSHOT], s);
+    Subscriber s = {.fn.snapshot = fn, .state = state};
+    return subscribe(h, SEAM_SNAPSHOT, s);
 }
 
 int hooks_on_history(Hooks *h, HistoryHook fn, void *state)
 {
-    Subscriber s = {.fn.history = fn, .state = state, .rank = h->rank};
-    return subscribe(&h->seam[SEAM_HISTORY], s);
+    Subscriber s = {.fn.history = fn, .state = state};
+    return subscribe(h, SEAM_HISTORY, s);
 }
 
 int hooks_on_report(Hooks *h, ReportHook fn, void *state)
 {
-    Subscriber s = {.fn.report = fn, .state = state, .rank = h->rank};
-    return subscribe(&h->seam[SEAM_REPORT], s);
+    Subscriber s = {.fn.report = fn, .state = state};
+    return subscribe(h, SEAM_REPORT, s);
 }
 
 int hooks_on_checkpoint(Hooks *h, CheckpointHook fn, void *state)
 {
-    Subscriber s = {.fn.checkpoint = fn, .state = state, .rank = h->rank};
-    return subscribe(&h->seam[SEAM_CHECKPOINT], s);
+    Subscriber s = {.fn.checkpoint = fn, .state = state};
+    return subscribe(h, SEAM_CHECKPOINT, s);
 }
 
 int hooks_on_energy(Hooks *h, EnergyHook fn, void *state)
 {
-    Subscriber s = {.fn.energy = fn, .state = state, .rank = h->rank};
-    return subscribe(&h->seam[SEAM_ENERGY], s);
+    Subscriber s = {.fn.energy = fn, .state = state};
+    return subscribe(h, SEAM_ENERGY, s);
 }
 
 int hooks_run_report(const struct Sim *sim, FILE *f)

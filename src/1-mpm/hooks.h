@@ -46,6 +46,24 @@ typedef enum Seam {
     SEAM_COUNT           /**< number of seams */
 } Seam;
 
+/** The bit of seam @p s in a Method's mask of the seams it runs. */
+#define SEAM_BIT(s) (1u << (s))
+/** The seams a step runs (Tasks 1-7); the others belong to the program
+ *  around it (set-up, output, checkpoint) and run under every method. */
+#define SEAMS_OF_STEP                                                     \
+    (SEAM_BIT(SEAM_TASK1_FIELDS) | SEAM_BIT(SEAM_TASK2_CONTACT) |         \
+     SEAM_BIT(SEAM_TASK4_CONTACT) | SEAM_BIT(SEAM_TASK6_CONTACT) |        \
+     SEAM_BIT(SEAM_TASK7))
+
+/** The scene key whose reading subscribed (section "" for a top-level
+ *  one), and the line of its setting; key NULL: a subscriber not made by
+ *  a key (an installer's, or one a set-up subscriber adds). */
+typedef struct KeyAt {
+    const char *section;  /**< "cracks" of "cracks.contact", or "" */
+    const char *key;      /**< "contact" */
+    int line;             /**< line of the scene text (scene_lines_at()) */
+} KeyAt;
+
 /** A step seam's subscriber: non-zero (with Sim::fail filled) stops the run. */
 typedef int (*StepHook)(struct Sim *sim, void *state, Seam seam);
 /** A set-up subscriber: write a message and return non-zero to refuse. */
@@ -81,6 +99,7 @@ typedef struct Subscriber {
     } fn;                      /**< the function */
     void *state;               /**< passed back to it */
     int rank;                  /**< stage order of its installer */
+    KeyAt by;                  /**< the scene key that asked for it */
 } Subscriber;
 
 /** The subscribers of one seam, in stage order. */
@@ -121,7 +140,9 @@ typedef struct Choice {
     int rank;           /**< stage order of the stage that added it */
 } Choice;
 
-/** A row of the method table: how the run loop advances one step. */
+/// [method]
+/** A row of the method table: how the run loop advances one step, and
+ *  which of the scene's requests it honours (method_check_scene()). */
 typedef struct Method {
     const char *name;                /**< run.method */
     int (*step)(struct Sim *sim);    /**< one step; non-zero stops the run */
@@ -129,7 +150,15 @@ typedef struct Method {
      *  scene's run.cfl factor; NULL: the MPM rule (a cell crossed by the
      *  fastest wave, sim_set_time_step()). */
     double (*stable_step)(const struct Sim *sim);
+    unsigned seams;                  /**< SEAM_BITs of the step seams it runs */
+    /** Scene keys it carries out itself, so that their subscribers at
+     *  seams it does not run are not refused (NULL-ended, or NULL). */
+    const char *const *own_keys;
+    /** Settings ("run.update") it does not read: refused when the scene
+     *  gives them (NULL-ended, or NULL). */
+    const char *const *ignored_keys;
 } Method;
+/// [method]
 
 /** A part of the field key that a stage contributes (bits of a key). */
 typedef struct FieldKey {
@@ -155,6 +184,7 @@ typedef struct Hooks {
     int nfield_keys;                 /**< how many */
     SeamList seam[SEAM_COUNT];       /**< subscribers of each seam */
     int rank;                        /**< stage order of what is added now */
+    KeyAt reading;                   /**< the scene key read now, if any */
     int overflow;                    /**< -1 once a registry was full */
 } Hooks;
 /// [hooks]
@@ -162,6 +192,10 @@ typedef struct Hooks {
 /** @brief Mark what is registered or subscribed from now on as the
  *         @p rank-th stage's (stage order; stages.c alone calls it). */
 void hooks_begin_stage(Hooks *h, int rank);
+
+/** @brief Mark what is subscribed from now on as asked for by scene key
+ *         @p key (the scene reader calls it around a key's parser). */
+void hooks_begin_key(Hooks *h, KeyAt key);
 
 /** @brief Register a stress-update scheme. @return 0, or -1 when full. */
 int hooks_add_scheme(Hooks *h, const char *name, double before, double after,

@@ -218,9 +218,13 @@ int scene_read_open_keys(Sim *sim, SceneReader *r, const char *section,
         const config_setting_t *s = config_setting_get_member(group, key->key);
         if (!s)
             continue;
-        int rank = sim->hooks.rank;        /* it subscribes as its stage */
+        int rank = sim->hooks.rank;        /* it subscribes as its stage, */
+        KeyAt was = sim->hooks.reading;    /* for this key at this line */
         hooks_begin_stage(&sim->hooks, key->rank);
+        hooks_begin_key(&sim->hooks, (KeyAt){key->section, key->key,
+                                             (int)config_setting_source_line(s)});
         int rc = key->parse(sim, s, index, r);
+        hooks_begin_key(&sim->hooks, was);
         hooks_begin_stage(&sim->hooks, rank);
         if (rc)
             return -1;

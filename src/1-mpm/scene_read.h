@@ -74,7 +74,9 @@ int scene_check_open_keys(SceneReader *r, const Hooks *h, const char *section,
                           const char *const *core, const char *const *more);
 
 /** @brief Call the parser of every key the stages registered for
- *         @p section that @p group (entry @p index) holds. @return 0 or -1. */
+ *         @p section that @p group (entry @p index) holds, as its stage
+ *         and marking what it subscribes with the key and its line
+ *         (hooks_begin_key()). @return 0 or -1. */
 int scene_read_open_keys(Sim *sim, SceneReader *r, const char *section,
                          const config_setting_t *group, int index);
 

@@ -12,6 +12,7 @@
 #include "checkpoint.h"
 #include "scene_include.h"
 #include "footprint.h"
+#include "method_check.h"
 #include "scene_read.h"
 #include "setup.h"
 
@@ -76,7 +77,8 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
         return -1;
     if (setup_points(sim, err, errlen) || setup_grid(sim, err, errlen) ||
         setup_loads(sim, err, errlen) || setup_held_points(sim, err, errlen) ||
-        setup_check_totals(sim, err, errlen) || prepare_stages(sim, name, err, errlen))
+        setup_check_totals(sim, err, errlen) || prepare_stages(sim, name, err, errlen) ||
+        method_check_scene(sim, cfg, &r))       /* all subscribers are in */
         return -1;
     sim->bodyke = calloc((size_t)sim->scene.nbodies, sizeof(double));
     if (!sim->bodyke) {

@@ -7,8 +7,10 @@
 
 #include "sim.h"
 
-/** The MPM step of the Appendix (Tasks 0-8): the method "mpm". */
-static const Method mpm_method = {"mpm", sim_step, NULL};
+/** The MPM step of the Appendix (Tasks 0-8): the method "mpm"; it runs
+ *  every seam of the step and reads every setting. */
+static const Method mpm_method = {"mpm", sim_step, NULL, SEAMS_OF_STEP, NULL,
+                                  NULL};
 
 /// [stage1_install]
 void stage1_install(Hooks *h)

@@ -22,8 +22,20 @@ static double xefg_stable(const Sim *sim)
     return x ? x->stable_step : NAN;
 }
 
-/** The row of the method table. */
-static const Method xefg_method = {"xefg", xefg_step, xefg_stable};
+/** Keys XEFG carries out itself: the cracks are its enrichment (a
+ *  stationary crack), not the fields and motion of Tasks 1 and 7. */
+static const char *const xefg_own_keys[] = {"cracks", NULL};
+
+/** Settings XEFG does not read: its step has no stress-update scheme, no
+ *  spin of the stress, no crossing search. */
+static const char *const xefg_ignored_keys[] = {"run.update", "run.stress_rate",
+                                                "run.crack_search", NULL};
+
+/// [xefg_method]
+/** The row of the method table: xefg_step() runs no seam of the step. */
+static const Method xefg_method = {"xefg", xefg_step, xefg_stable, 0,
+                                   xefg_own_keys, xefg_ignored_keys};
+/// [xefg_method]
 
 /** The keys of the `xefg` section. */
 static const char *const xefg_keys[] = {"support", "gauss", "tip",
