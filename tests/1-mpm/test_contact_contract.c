@@ -119,7 +119,6 @@ static void no_subscriber_no_cost(void **state)
        has no arrays for it */
     Sim *sim = load(NULL);
     assert_null(sim->grid.qx);
-    assert_null(sim->grid.vol);
     int calls = 0;
     Sim *with = load(&calls);
     assert_non_null(with->grid.qx);
