@@ -25,8 +25,10 @@ CFLAGS_asan := $(WARN) -O1 -g -fno-omit-frame-pointer \
 LDFLAGS_release :=
 LDFLAGS_asan := -fsanitize=address,undefined,float-cast-overflow
 LIBS := -lconfig -lm
-# stage 6 and later solve small dense systems with LAPACKE
-stage_libs = $(if $(filter 6 7 8 9,$(1)),-llapacke) $(LIBS)
+# a stage's folder names the libraries its code needs in a file `libs`
+# (src/6-xefg/libs: LAPACKE, for small dense systems); stage N links those
+# of folders 1..N
+stage_libs = $(foreach d,$(call dirs_upto,$(1)),$(shell cat $(d)/libs 2>/dev/null)) $(LIBS)
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 # tests link cmocka and LAPACKE (the reference finite element solver)
 TEST_LIBS := -lcmocka -llapacke $(LIBS)

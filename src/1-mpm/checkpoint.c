@@ -11,7 +11,6 @@
 #include <unistd.h>
 
 #include "outfile.h"
-#include "stages.h"
 
 static const char MAGIC[16] = "MPM checkpoint\n";
 
@@ -22,7 +21,8 @@ typedef struct Layout {
     int32_t stage;
 } Layout;
 
-static Layout this_layout(void)
+/** The layout this program writes and reads: build of stage @p stage. */
+static Layout this_layout(int stage)
 {
     Layout l;
     memset(&l, 0, sizeof l);
@@ -31,7 +31,7 @@ static Layout this_layout(void)
     l.size_int = sizeof(int);
     l.size_double = sizeof(double);
     l.probe = 1.0 / 3.0;
-    l.stage = mpm_stage();
+    l.stage = stage;
     return l;
 }
 
@@ -60,7 +60,7 @@ static int io_string(FILE *f, char **s, int save)
 
 /** The header: magic, layout, the scene's fingerprint, path, overrides. */
 static int io_header(FILE *f, Layout *l, uint64_t *hash, CheckpointScene *cs,
-                     int save)
+                     int stage, int save)
 {
     char magic[16];
     memcpy(magic, MAGIC, sizeof magic);
@@ -68,7 +68,7 @@ static int io_header(FILE *f, Layout *l, uint64_t *hash, CheckpointScene *cs,
         return -2;
     if (checkpoint_io(f, l, sizeof *l, save) || checkpoint_io(f, hash, sizeof *hash, save))
         return -1;
-    Layout want = this_layout();
+    Layout want = this_layout(stage);
     if (!save && memcmp(l, &want, sizeof want))
         return -3;
     int32_t n = cs->noverrides;
@@ -179,14 +179,14 @@ int checkpoint_write(Sim *sim, const RunProgress *rp, const char *dir)
     OutFile o;
     if (outfile_open(&o, dir, "%s", CHECKPOINT_FILE))
         return -1;
-    Layout l = this_layout();
+    Layout l = this_layout(sim->hooks.build_stage);
     uint64_t hash = sim->scene_hash;
     char *abs = absolute_path(sim->source);       /* restart from anywhere */
     CheckpointScene cs = {abs ? abs : (char *)sim->source, sim->noverrides,
                           (char **)sim->overrides};
     RunProgress copy = *rp;
     errno = 0;
-    int bad = io_header(o.f, &l, &hash, &cs, 1) || io_body(o.f, sim, &copy, 1);
+    int bad = io_header(o.f, &l, &hash, &cs, l.stage, 1) || io_body(o.f, sim, &copy, 1);
     free(abs);
     if (bad) {
         outfile_report(o.path, errno ? errno : EIO);
@@ -206,15 +206,15 @@ void checkpoint_scene_free(CheckpointScene *cs)
 }
 
 /** The message for io_header()'s or io_body()'s return @p rc. */
-static void explain(int rc, const char *path, const Layout *l, char *err,
+static void explain(int rc, const char *path, const Layout *l, int stage, char *err,
                     size_t errlen)
 {
     if (rc == -2)
         snprintf(err, errlen, "%s: not a checkpoint of mpm", path);
-    else if (rc == -3 && l->stage != mpm_stage())
+    else if (rc == -3 && l->stage != stage)
         snprintf(err, errlen, "%s: written by stage %d, this is stage %d: "
                  "restart it with build/stage%d/mpm", path, (int)l->stage,
-                 mpm_stage(), (int)l->stage);
+                 stage, (int)l->stage);
     else if (rc == -3)
         snprintf(err, errlen, "%s: checkpoint format %u or another machine's "
                  "sizes, this build reads format %d: run the scene again",
@@ -243,7 +243,7 @@ static FILE *open_checkpoint(const char *dir, char **path, char *err,
 /** Read @p dir's checkpoint: its header into @p cs and, when @p sim is
  *  not NULL, its state into @p sim and @p rp. @return 0, or -1 with a
  *  message. */
-static int read_checkpoint(const char *dir, CheckpointScene *cs, Sim *sim,
+static int read_checkpoint(const char *dir, int stage, CheckpointScene *cs, Sim *sim,
                            RunProgress *rp, char *err, size_t errlen)
 {
     memset(cs, 0, sizeof *cs);
@@ -255,13 +255,13 @@ static int read_checkpoint(const char *dir, CheckpointScene *cs, Sim *sim,
     }
     Layout l;
     uint64_t hash;
-    int rc = io_header(f, &l, &hash, cs, 0);
+    int rc = io_header(f, &l, &hash, cs, stage, 0);
     if (rc == 0 && sim && hash != sim->scene_hash)
         rc = -5;
     if (rc == 0 && sim)
         rc = io_body(f, sim, rp, 0);
     if (rc) {
-        explain(rc, path, &l, err, errlen);
+        explain(rc, path, &l, stage, err, errlen);
         checkpoint_scene_free(cs);
     }
     fclose(f);
@@ -269,17 +269,17 @@ static int read_checkpoint(const char *dir, CheckpointScene *cs, Sim *sim,
     return rc ? -1 : 0;
 }
 
-int checkpoint_scene(const char *dir, CheckpointScene *cs, char *err,
-                     size_t errlen)
+int checkpoint_scene(const char *dir, int stage, CheckpointScene *cs,
+                     char *err, size_t errlen)
 {
-    return read_checkpoint(dir, cs, NULL, NULL, err, errlen);
+    return read_checkpoint(dir, stage, cs, NULL, NULL, err, errlen);
 }
 
 int checkpoint_read(Sim *sim, RunProgress *rp, const char *dir, char *err,
                     size_t errlen)
 {
     CheckpointScene cs;
-    int rc = read_checkpoint(dir, &cs, sim, rp, err, errlen);
+    int rc = read_checkpoint(dir, sim->hooks.build_stage, &cs, sim, rp, err, errlen);
     checkpoint_scene_free(&cs);
     return rc;
 }

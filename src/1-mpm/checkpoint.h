@@ -56,9 +56,10 @@ int checkpoint_io(FILE *f, void *p, size_t bytes, int save);
 int checkpoint_write(Sim *sim, const RunProgress *rp, const char *dir);
 
 /** @brief Read which scene @p dir's checkpoint belongs to (to load it
- *         before checkpoint_read()). @return 0, or -1 with a message. */
-int checkpoint_scene(const char *dir, CheckpointScene *cs, char *err,
-                     size_t errlen);
+ *         before checkpoint_read()), refusing one that a build of another
+ *         stage than @p stage wrote. @return 0, or -1 with a message. */
+int checkpoint_scene(const char *dir, int stage, CheckpointScene *cs,
+                     char *err, size_t errlen);
 
 /** @brief Release what checkpoint_scene() allocated. */
 void checkpoint_scene_free(CheckpointScene *cs);

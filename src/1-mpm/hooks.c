@@ -60,6 +60,14 @@ int hooks_add_refusal(Hooks *h, const char *key, const char *value,
     return 0;
 }
 
+int hooks_add_outputs(Hooks *h, const char *text)
+{
+    if (h->noutputs == HOOKS_MAX_OUTPUTS)
+        return h->overflow = -1;
+    h->outputs[h->noutputs++] = text;
+    return 0;
+}
+
 const Refusal *hooks_find_refusal(const Hooks *h, const char *key,
                                   const char *value)
 {
@@ -216,4 +224,12 @@ int hooks_run_step(Sim *sim, Seam seam)
             return rc;
     }
     return 0;
+}
+
+int method_reads(const Method *m, const char *key)
+{
+    for (const char *const *k = m->ignored_keys; k && *k; k++)
+        if (strcmp(*k, key) == 0)
+            return 0;
+    return 1;
 }

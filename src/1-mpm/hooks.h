@@ -28,6 +28,8 @@ struct SceneReader;
 
 /** Most entries of each registry and subscribers of each seam. */
 #define HOOKS_MAX 16
+/** How many stages may describe their output files (Hooks::outputs). */
+#define HOOKS_MAX_OUTPUTS 8
 
 /// [seams]
 /** The named seams. Step seams follow the paper's Tasks (Appendix). */
@@ -160,6 +162,10 @@ typedef struct Method {
 } Method;
 /// [method]
 
+/** @brief Does method @p m read the setting @p key ("run.update"), that
+ *         is, is it not among its Method::ignored_keys? */
+int method_reads(const Method *m, const char *key);
+
 /** A part of the field key that a stage contributes (bits of a key). */
 typedef struct FieldKey {
     const char *name;   /**< "crack side", "material", ... */
@@ -182,8 +188,11 @@ typedef struct Hooks {
     int nchoices;                    /**< how many */
     FieldKey field_keys[HOOKS_MAX];  /**< parts of the field key */
     int nfield_keys;                 /**< how many */
+    const char *outputs[HOOKS_MAX_OUTPUTS]; /**< files stages add (--help) */
+    int noutputs;                    /**< how many */
     SeamList seam[SEAM_COUNT];       /**< subscribers of each seam */
     int rank;                        /**< stage order of what is added now */
+    int build_stage;                 /**< the build's last stage (stages.c) */
     KeyAt reading;                   /**< the scene key read now, if any */
     int overflow;                    /**< -1 once a registry was full */
 } Hooks;
@@ -196,6 +205,11 @@ void hooks_begin_stage(Hooks *h, int rank);
 /** @brief Mark what is subscribed from now on as asked for by scene key
  *         @p key (the scene reader calls it around a key's parser). */
 void hooks_begin_key(Hooks *h, KeyAt key);
+
+/** @brief Say, for `mpm --help`, which files a stage adds to the output
+ *         folder and when (a sentence's clause). @return 0, or -1 when
+ *         full. */
+int hooks_add_outputs(Hooks *h, const char *text);
 
 /** @brief Register a stress-update scheme. @return 0, or -1 when full. */
 int hooks_add_scheme(Hooks *h, const char *name, double before, double after,

@@ -38,15 +38,18 @@ static void install_signals(void)
     signal(SIGXFSZ, SIG_IGN);
 }
 
-/** The help text; the scene sections and the crack files are this
- *  build's, read from the registries its stages fill. */
+/** The help text; the scene sections and the stages' output files are
+ *  this build's, read from the registries its stages fill. */
 static void usage(FILE *f)
 {
     Hooks h;
-    char sections[256];
+    char sections[256], outputs[1024] = "";
     memset(&h, 0, sizeof h);
     mpm_install_stages(&h);
     scene_sections_list(&h, sections, sizeof sections);
+    for (int k = 0; k < h.noutputs; k++)
+        snprintf(outputs + strlen(outputs), sizeof outputs - strlen(outputs),
+                 ";\n%s", h.outputs[k]);
     fprintf(f,
         "usage: mpm SCENE [-o OUTDIR] [-q] [--stop-at STEP] [--max-memory MB]\n"
         "           [key.path=value ...]\n"
@@ -82,9 +85,7 @@ static void usage(FILE *f)
         "and a checkpoint written.\n"
         "Exit status: 0 done (or stopped at --stop-at), 1 bad input, 2 output\n"
         "error, 3 unstable run, 130 interrupted (SIGINT), 143 (SIGTERM).\n",
-        mpm_stage(), sections, hooks_find_key(&h, "", "cracks") ?
-        ";\na scene with cracks adds cracks_NNNNN.vtp with cracks.pvd (the crack\n"
-        "lines in ParaView) and cracks_NNNNN.csv (their points)" : "");
+        mpm_stage(), sections, outputs);
 }
 
 /** What the command line asks. */
@@ -171,7 +172,7 @@ static int load_and_run(Sim *sim, Args *a)
     CheckpointScene cs = {NULL, 0, NULL};
     char err[2048];
     if (a->restart) {
-        if (checkpoint_scene(a->outdir, &cs, err, sizeof err)) {
+        if (checkpoint_scene(a->outdir, mpm_stage(), &cs, err, sizeof err)) {
             fprintf(stderr, "mpm: --restart: %s\n", err);
             return 1;
         }
@@ -184,7 +185,7 @@ static int load_and_run(Sim *sim, Args *a)
         goto done;
     }
     const Method *method = sim->scene.run.method;
-    int mpm = method->step == sim_step;      /* else a method of its own */
+    int mpm = method_reads(method, "run.update");  /* an update scheme */
     printf("mpm (stage %d): %s: %d points, grid %d x %d cells, dt = %.6g %s, "
            "%ld steps, %s %s\n", mpm_stage(), a->scene, sim->pts.n,
            sim->scene.ncx, sim->scene.ncy, sim->dt, sim->scene.run.units->time,

@@ -51,7 +51,7 @@ static const char *methods_that(const Hooks *h, unsigned mask, const char *key,
     for (int k = 0; k < h->nchoices; k++) {
         const Method *m = h->choices[k].impl;
         if (strcmp(h->choices[k].key, "run.method") != 0 ||
-            (m->seams & mask) != mask || (key && listed(m->ignored_keys, key)))
+            (m->seams & mask) != mask || (key && !method_reads(m, key)))
             continue;
         snprintf(buf + strlen(buf), len - strlen(buf), "%s\"%s\"",
                  buf[0] ? " or " : "", m->name);

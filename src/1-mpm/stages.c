@@ -31,6 +31,7 @@
 /// [install_stages]
 void mpm_install_stages(Hooks *h)
 {
+    h->build_stage = MPM_STAGE;
     hooks_begin_stage(h, 1);
     stage1_install(h);
     hooks_begin_stage(h, 2);

@@ -71,6 +71,11 @@ int contact_law_read(struct SceneReader *r, const config_setting_t *s,
  * @brief Change the momenta of fields (slots) @p a and @p b, found in
  *        contact, by @p law, with @p n the unit normal from a to b; b gets
  *        exactly minus a's change, so momentum is conserved to round-off.
+ * @param g   the grid (momenta and masses of the slots)
+ * @param a   slot of field a
+ * @param b   slot of field b
+ * @param n   unit normal from a to b
+ * @param law the pair's contact law
  * @param dp  a's momentum change (out)
  * @return 1 when the fields slide under friction (the change is not
  *         stick's), else 0.
@@ -85,6 +90,13 @@ int contact_adjust(Grid *g, int a, int b, const double n[2],
  *        contact and f the forces of the update (zero for frictionless,
  *        usually < 0). The velocity after the update is no measure: where
  *        a field's mass is tiny, f dt / m is far above any point's speed.
+ * @param g  the grid, after the update and before Task 4's contact
+ *           changed the forces (q and f as Task 4 left them)
+ * @param a  slot of field a
+ * @param b  slot of field b
+ * @param n  unit normal from a to b
+ * @param dp a's momentum change (contact_adjust())
+ * @param dt the step
  */
 double contact_friction_work(const Grid *g, int a, int b, const double n[2],
                              const double dp[2], double dt);
