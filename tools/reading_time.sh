@@ -3,7 +3,9 @@
 # / 15, the measure of issue 26 ("a chapter a student reads in one sitting,
 # about 45 minutes").
 #
-#   bash tools/reading_time.sh [chapters dir]     (default: chapters)
+#   bash tools/reading_time.sh [chapters dir]
+#
+# (default: chapters; a relative path is from the repository root).
 #
 # Prints one line per page of chapters/*.md in book order (the front page's
 # \subpage list, then the other pages by file name): file, words, code
@@ -21,8 +23,9 @@
 #       line or another such line, outside a \f[ ... \f] formula;
 #   - words are the other lines' whitespace-separated tokens with a letter
 #     or digit in them, once Doxygen's commands (\ref, \f$, ...), anchors
-#     {#...} and link targets (...) are taken out; a formula's tokens count
-#     as words, table rows too. Blank lines and [TOC] count nothing.
+#     ({#...}, \anchor NAME) and link targets (...) are taken out; a
+#     formula's tokens count as words, table rows too. Blank lines and
+#     [TOC] count nothing.
 # SHOW_CODE=1 prints the indented lines taken for code to stderr, to check.
 # A snippet, file or marker that cannot be found is reported on stderr and
 # makes the exit status 1.
@@ -125,6 +128,7 @@ for my $f (@order) {
         next if $t =~ /^\s*\[TOC\]\s*$/;
         $t =~ s/\{#[\w-]+\}//g;                 # anchors
         $t =~ s/\]\([^)]*\)/]/g;                # link targets
+        $t =~ s/[\\@]anchor\s+\S+//g;         # an anchor is not read
         $t =~ s/[\\@](?:ref|subpage|page|snippet|image)\b//g;
         $t =~ s/\\f[\$\[\]]//g;                 # formula delimiters
         $t =~ s/<[^>]*>//g;                     # HTML tags
