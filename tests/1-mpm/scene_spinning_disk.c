@@ -15,7 +15,8 @@
  * units of rho v^2, where physics puts 0.41 (steady) or about twice that
  * (a sudden start rings about it), for both rates: the rest is noise that
  * points crossing cells put in, and the objective rate does not remove it
- * (chapter 1).
+ * (the book's appendix "Options of the method", chapter 1's objective
+ * stress rate).
  */
 #include <stdio.h>
 #include <stdlib.h>
