@@ -16,17 +16,19 @@
  * USAVG max dev 0.021 %. With USAVG's row made MUSL's, this test fails.
  *
  * With contact (figures/fig6/beam_supports.cfg: impactor, beam and
- * supports, frictionless, V_sep 0.9, V_contact 1.1): the contact at the
- * nodes adds its own error, the same in every scheme and not a time-step
- * error: USAVG's max dev is 1.05 % at cfl 0.2 and 0.94 % at cfl 0.1 to
- * 6 ms (it moves between 0.35 % and 1.1 % when V_sep goes from 0.75 to
- * 0.95, chapter 5), while MUSL's halves with the step (0.55 % at cfl 0.2,
- * 0.30 % at 0.1). So the test asserts, with contact: USL stops with a
- * diagnostic and leaves no NaN; MUSL's energy falls; USF's rises; USAVG's
- * max dev is below USF's, and halving the step changes it by less than a
- * quarter (a first-order time-step error would halve it: with USAVG's row
- * made MUSL's the ratio is 0.549 and this test fails). MUSL's max dev
- * (0.55 %) is below USAVG's here: chapter 5 says why.
+ * supports, frictionless, the default gap detection), at the scene's cfl
+ * 0.1, to 3.8 ms, the paper's claims: USL stops with a diagnostic and
+ * leaves no NaN (at cfl 0.2); MUSL's energy falls; USF's rises; USAVG's
+ * E/E0 stays within +-0.18 % of its mean over the run (the paper's band;
+ * bounds fixed before the run), its max |E/E0 - 1| is the smallest of
+ * the three, and its band is a time-step error: at cfl 0.1 at most 0.6
+ * of its band at cfl 0.2 (first order would give 0.5). Measured when
+ * written (history.csv's records): USAVG +-0.114 % at cfl 0.1 and +-0.280 %
+ * at 0.2 (ratio 0.41); max |E/E0 - 1| USAVG 0.22 %, MUSL 0.79 %, USF
+ * 2.87 %. With the paper's volume rule (V_sep 0.9, V_contact 1.1, the
+ * scene before issue 25's gap rule) USAVG's band was +-0.62 % and did not
+ * shrink with the step (1.05 % max dev at cfl 0.2, 0.94 % at 0.1): this
+ * test fails on that scene.
  */
 #include "testkit.h"
 
@@ -38,10 +40,14 @@ static const char *const ONE_FIELD = "figures/fig6/beam_impact.cfg";
 /** The issue's aim for USAVG, +-0.1 %, as a bound on |E/E0 - 1|. */
 #define USAVG_BOUND 0.001
 
+/** The paper's band for USAVG with contact, +-0.18 % about its mean. */
+#define PAPER_BAND 0.0018
+
 /** What one run saw. */
 typedef struct Fig6Run {
     int failed;             /* sim_advance() returned non-zero */
     double e_end, dev;      /* E/E0 at the end, max |E/E0 - 1| */
+    double band;            /* max |E/E0 - mean of E/E0| over the steps */
 } Fig6Run;
 
 static Sim *load(const char *scene, const char *scheme, const char *cfl)
@@ -59,7 +65,9 @@ static Fig6Run run(Sim *sim)
 {
     Totals t = sim_totals(sim);
     double e0 = t.kinetic + t.strain;
-    Fig6Run r = {0, 1.0, 0.0};
+    Fig6Run r = {0, 1.0, 0.0, 0.0};
+    double lo = 1.0, hi = 1.0, sum = 1.0;
+    long n = 1;
     while (sim->step < sim->nsteps) {
         if (sim_advance(sim) != 0) {
             r.failed = 1;
@@ -68,7 +76,13 @@ static Fig6Run run(Sim *sim)
         t = sim_totals(sim);
         r.e_end = (t.kinetic + t.strain) / e0;
         r.dev = fmax(r.dev, fabs(r.e_end - 1.0));
+        lo = fmin(lo, r.e_end);
+        hi = fmax(hi, r.e_end);
+        sum += r.e_end;
+        n++;
     }
+    double mean = sum / (double)n;
+    r.band = fmax(hi - mean, mean - lo);
     return r;
 }
 
@@ -100,8 +114,9 @@ static Fig6Run one_scheme(const char *scene, const char *name, const char *cfl)
 {
     Sim *sim = load(scene, name, cfl);
     Fig6Run r = run(sim);
-    printf("  %-5s cfl %s: %s, E/E0 at the end %.5f, max |E/E0 - 1| %.3f %%\n", name,
-           cfl, r.failed ? "unstable" : "ran", r.e_end, 100 * r.dev);
+    printf("  %-5s cfl %s: %s, E/E0 at the end %.5f, max |E/E0 - 1| %.3f %%, "
+           "within +-%.3f %% of its mean\n", name, cfl, r.failed ? "unstable" : "ran",
+           r.e_end, 100 * r.dev, 100 * r.band);
     assert_false(r.failed);
     tk_free(sim);
     return r;
@@ -125,15 +140,17 @@ static void contact_ordering(void **state)
 {
     (void)state;
     usl_stops(CONTACT);
-    Fig6Run musl = one_scheme(CONTACT, "musl", "0.2");
-    Fig6Run usf = one_scheme(CONTACT, "usf", "0.2");
-    Fig6Run usavg = one_scheme(CONTACT, "usavg", "0.2");
-    Fig6Run half = one_scheme(CONTACT, "usavg", "0.1");
-    printf("  usavg: max dev at cfl 0.1 / at cfl 0.2 = %.3f\n", half.dev / usavg.dev);
+    Fig6Run musl = one_scheme(CONTACT, "musl", "0.1");
+    Fig6Run usf = one_scheme(CONTACT, "usf", "0.1");
+    Fig6Run usavg = one_scheme(CONTACT, "usavg", "0.1");
+    Fig6Run twice = one_scheme(CONTACT, "usavg", "0.2");
+    printf("  usavg: band at cfl 0.1 / at cfl 0.2 = %.3f\n", usavg.band / twice.band);
     assert_true(musl.e_end < 1.0);
     assert_true(usf.e_end > 1.0);
+    assert_true(usavg.band <= PAPER_BAND);
+    assert_true(usavg.dev < musl.dev);
     assert_true(usavg.dev < usf.dev);
-    assert_true(fabs(half.dev / usavg.dev - 1.0) < 0.25);
+    assert_true(usavg.band <= 0.6 * twice.band);
 }
 
 int main(void)
