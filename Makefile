@@ -227,7 +227,8 @@ docs:
 
 # Each figure is a file, build/figures/ + the first of FIG_OUT_x, remade
 # only when what it reads has changed: its folder (make.sh, plots, scenes),
-# the programs it runs (FIG_RUN_x) and its other inputs (FIG_USES_x); the
+# figures/lib.sh (what the scripts share), the programs it runs (FIG_RUN_x)
+# and its other inputs (FIG_USES_x); the
 # other files of FIG_OUT_x come with the first. `make x` is the same.
 # A figure folder not listed here: x.png, remade after any stage. REDRAW=1
 # remakes the figures named whatever their age.
@@ -279,7 +280,7 @@ FIG_USES_fig-xefg-dcb := figures/fig1/dcb_full.cfg tests/support/q4.h \
 FIGURES := $(notdir $(wildcard figures/fig*))
 define FIGURE_RULES
 FIG_FILES_$(1) := $$(addprefix build/figures/,$$(or $$(FIG_OUT_$(1)),$(1).png))
-$$(firstword $$(FIG_FILES_$(1))): $$(wildcard figures/$(1)/*) $$(FIG_USES_$(1)) \
+$$(firstword $$(FIG_FILES_$(1))): $$(wildcard figures/$(1)/*) figures/lib.sh $$(FIG_USES_$(1)) \
         $$(or $$(FIG_RUN_$(1)),$$(foreach s,$$(STAGES),build/stage$$(s)/mpm)) \
         $$(if $$(REDRAW),FORCE) | figure-deps
 	@bash figures/$(1)/make.sh || { rm -f $$@; exit 1; }

@@ -7,13 +7,9 @@
 #
 # Writes build/figures/fig-crossing.png and build/figures/fig-crossing.csv
 # (points, search, whole step, Task 1). About two minutes.
-set -u
-cd "$(dirname "$0")/../.."
-MPM=${MPM:-build/stage3/mpm}
-OUT=build/figures
-[ -x "$MPM" ] || { echo "fig-crossing: $MPM not built" >&2; exit 1; }
-command -v valgrind >/dev/null || { echo "fig-crossing: needs valgrind" >&2; exit 1; }
-mkdir -p "$OUT"
+. "$(dirname "$0")/../lib.sh"
+fig_mpm 3
+fig_need valgrind valgrind
 csv=$OUT/fig-crossing.csv
 echo "points,search,whole,task1" >"$csv"
 for scene in figures/fig1/dcb_full.cfg tools/bench/dcb_crack_2x.cfg tools/bench/dcb_crack.cfg; do
@@ -29,5 +25,6 @@ for search in plain screened indexed; do
     awk -F, -v s="$search" '$2 == s' "$csv"
     printf '\n\n'
 done >"$dat"
+fig_need_gnuplot "$csv written, no plot"
 gnuplot -e "data='$dat'; out='$OUT/fig-crossing.png'" figures/fig-crossing/plot.gp || exit 1
 echo "fig-crossing: wrote $OUT/fig-crossing.png and $csv"

@@ -12,13 +12,11 @@
 # Both runs write 17 digits (run.precision = "full"), so that the
 # difference measured is the runs' own, not that of rounding the output.
 # Extra arguments are overrides for both runs (run.time=50 for a short one).
-set -euo pipefail
-cd "$(dirname "$0")/../.."
-MPM=${MPM:-build/stage2/mpm}
-OUT=build/figures
+. "$(dirname "$0")/../lib.sh"
+set -eo pipefail
 RUNS=build/fig-patch
-make --no-print-directory "$MPM"
-mkdir -p "$OUT" "$RUNS"
+fig_mpm 2
+mkdir -p "$RUNS"
 for half in full half; do
     "$MPM" "figures/fig1/dcb_$half.cfg" -q -o "$RUNS/$half" run.precision=full \
         run.snapshots=0 "$@" >/dev/null
@@ -28,6 +26,7 @@ awk -F, -v full="$RUNS/full/particles_final.csv" -f figures/fig-patch/match.awk 
     > "$RUNS/difference.txt"
 grep -v '^label=' "$RUNS/difference.txt" | tee "$OUT/fig-patch.txt"
 label=$(sed -n 's/^label=//p' "$RUNS/difference.txt")
+fig_need_gnuplot "the runs and $OUT/fig-patch.txt written, no plot"
 gnuplot -e "full='$RUNS/full/particles_final.csv'" \
         -e "half='$RUNS/half/particles_final.csv'" \
         -e "label='$label'; out='$OUT/fig-patch.png'" figures/fig-patch/plot.gp

@@ -10,24 +10,23 @@
 # test's 1 % band (over the times the test measures, t >= 0.4 T).
 # build/figures/fig-slide.txt: what the test printed (its pass or fail
 # included: the figure is drawn either way). About two seconds.
-set -uo pipefail
-cd "$(dirname "$0")/../.."
+. "$(dirname "$0")/../lib.sh"
+set -o pipefail
 TEST=build/stage4/tests/4-contact/scene_slide
-OUT=build/figures
 RUNS=build/fig-slide
-make --no-print-directory build/stage4/mpm "$TEST" >/dev/null || exit 1
-mkdir -p "$OUT" "$RUNS"
+fig_build build/stage4/mpm "$TEST"
+mkdir -p "$RUNS"
 rm -f "$RUNS"/*.dat
 txt=$OUT/fig-slide.txt
 {
     echo "make fig-slide: $TEST with SLIDE_TABLE=$RUNS, on:"
-    echo "  $(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)"
+    echo "  $(fig_cpu)"
     SLIDE_TABLE=$RUNS MPM_BIN=build/stage4/mpm "$TEST" 2>&1
     echo "test exit status: $?"
 } | tee "$txt"
 for f in slide_t30_mu0.00_h1.00 slide_t30_mu0.00_h0.50 slide_t30_mu0.30_h1.00 slide_t30_mu0.30_h0.50; do
     [ -s "$RUNS/$f.dat" ] || { echo "fig-slide: $RUNS/$f.dat not written" >&2; exit 1; }
 done
-command -v gnuplot >/dev/null 2>&1 || { echo "fig-slide: gnuplot not found" >&2; exit 1; }
+fig_need_gnuplot "$txt written, no plot"
 gnuplot -e "runs='$RUNS'; out='$OUT/fig-slide.png'" figures/fig-slide/plot.gp || exit 1
 echo "fig-slide: $OUT/fig-slide.png, $txt"

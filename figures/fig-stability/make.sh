@@ -37,19 +37,15 @@
 # Environment: MPM (default build/stage5/mpm), SCHEMES (default
 # "usl musl usf usavg"), CFLS (default "0.1 0.2 ... 1.0 1.2"), PPCS
 # (default "1 2 3 4"), TIME (ms, default 1.5), BOUND (default 0.01).
-set -u
-cd "$(dirname "$0")/../.."
-MPM=${MPM:-build/stage5/mpm}
+. "$(dirname "$0")/../lib.sh"
 SCHEMES=${SCHEMES:-"usl musl usf usavg"}
 CFLS=${CFLS:-"0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0 1.2"}
 PPCS=${PPCS:-"1 2 3 4"}
 TIME=${TIME:-1.5}
 BOUND=${BOUND:-0.01}
 SCENE=figures/fig6/beam_supports.cfg
-OUT=build/figures
 RUNS=$OUT/fig-stability
-[ "$MPM" = build/stage5/mpm ] && make --no-print-directory build/stage5/mpm >/dev/null
-[ -x "$MPM" ] || { echo "fig-stability: $MPM not built" >&2; exit 1; }
+fig_mpm 5
 rm -rf "$RUNS"
 mkdir -p "$RUNS"
 
@@ -103,13 +99,8 @@ run() {
     local s=$1 c=$2 n=$3
     shift 3
     local name=$s-c$c-p$n$([ $# -gt 0 ] && echo -ins)
-    local dir=$RUNS/$name t0 t1 rc secs d tm
-    t0=$(date +%s%N)
-    "$MPM" "$SCENE" -q -o "$dir" run.update="$s" run.cfl="$c" run.time="$TIME" \
-        $(ppc_over "$n") "$@" >"$dir.log" 2>&1
-    rc=$?
-    t1=$(date +%s%N)
-    secs=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f", (b - a) / 1e9 }')
+    local dir=$RUNS/$name d tm
+    fig_try "$dir" "$SCENE" run.update="$s" run.cfl="$c" run.time="$TIME" $(ppc_over "$n") "$@"
     local fin=finite
     if [ -d "$dir" ] && ! finite "$dir" >"$dir.finite"; then
         fin="NOT-FINITE"
@@ -131,10 +122,8 @@ run() {
             ;;
         3)
             class=stopped
-            local msg step t p q v b
-            msg=$(grep -m1 'unstable at step' "$dir.log")
+            local msg=$unstable_msg t=$unstable_t step p q v b
             step=$(sed -nE 's/.*unstable at step ([0-9]+) .*/\1/p' <<<"$msg")
-            t=$(sed -nE 's/.*\(t = ([0-9.eE+-]+) ms\).*/\1/p' <<<"$msg")
             p=$(sed -nE 's/.*particle (-?[0-9]+) .*/\1/p' <<<"$msg")
             q=$(sed -nE 's/.*particle -?[0-9]+ (.*) = [^;]*; stopping.*/\1/p' <<<"$msg")
             v=$(sed -nE 's/.* = ([^;]*); stopping.*/\1/p' <<<"$msg")
@@ -150,15 +139,13 @@ run() {
                    "$(grep -m1 . "$dir.log")")
             ;;
         *)
-            cat "$dir.log" >&2
-            echo "fig-stability: $name failed (exit $rc)" >&2
-            exit 1
+            fig_failed "$dir"
             ;;
     esac
     echo "fig-stability: $line"
 }
 
-start=$(date +%s%N)
+start=$(fig_now)
 dat=$RUNS/map.dat
 : >"$dat"
 details=()
@@ -185,7 +172,7 @@ for s in $SCHEMES; do
     done
     printf '\n\n' >>"$dat"
 done
-end=$(date +%s%N)
+wall=$(fig_since "$start")
 
 summary=$OUT/fig-stability.txt
 {
@@ -217,15 +204,11 @@ summary=$OUT/fig-stability.txt
     printf '%s\n' "${details[@]}"
     echo
     echo "history.csv / particles_final.csv rows with nan or inf: $violations run(s)"
-    ms=$(( (end - start) / 1000000 ))
-    printf 'wall time of the runs: %d.%03d s\n' $((ms / 1000)) $((ms % 1000))
+    echo "wall time of the runs: $wall s"
 } >"$summary"
 cat "$summary"
 
-if ! command -v gnuplot >/dev/null 2>&1; then
-    echo "fig-stability: gnuplot not found; runs and $summary written, no plot" >&2
-    exit 1
-fi
+fig_need_gnuplot "runs and $summary written, no plot"
 gnuplot -e "data='$dat'; out='$OUT/fig-stability.png'; schemes='$SCHEMES'; cfls='$CFLS'; \
     ppcs='$PPCS'; bound='$BOUND'; tend='$TIME'" figures/fig-stability/plot.gp || exit 1
 echo "fig-stability: wrote $OUT/fig-stability.png and $summary"

@@ -11,17 +11,17 @@
 # h = 0.25 and 0.125 mm (10 s); TIP_FEA_H=0.125 takes h = 0.125 and 0.0625
 # mm instead (about 2 minutes and 4.3 GB of memory; the tables change by
 # less than 0.3 percentage points).
-set -euo pipefail
-cd "$(dirname "$0")/../.."
-MPM=${MPM:-build/stage3/mpm}
+. "$(dirname "$0")/../lib.sh"
+set -eo pipefail
 TEST=build/stage3/tests/3-crossing/scene_tip_on_node
-OUT=build/figures
 RUNS=build/fig-tip
-make --no-print-directory "$MPM" "$TEST"
+fig_mpm 3
+fig_build "$TEST"
 mkdir -p "$OUT/fig-tip" "$RUNS"
 for s in tip_node_2mm tip_mid_51 tip_node_1mm tip_mid_101 tip_node_05mm tip_mid_201; do
     "$MPM" "tests/3-crossing/scenes/$s.cfg" -q -o "$RUNS/$s" run.snapshots=1
 done
 TIP_FEA_H=${TIP_FEA_H:-0.25} TIP_STUDY=$RUNS TIP_CSV_DIR=$OUT/fig-tip "$TEST" | tee "$OUT/fig-tip.txt"
+fig_need_gnuplot "$OUT/fig-tip.txt written, no plot"
 gnuplot -e "dir='$OUT/fig-tip'; out='$OUT/fig-tip.png'" figures/fig-tip/plot.gp
 echo "fig-tip: $OUT/fig-tip.png, tables in $OUT/fig-tip.txt"

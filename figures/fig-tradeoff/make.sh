@@ -32,41 +32,21 @@
 # mm; default 1, so meshes 1, 0.5, 0.25; 0.5 moved the references of h=2
 # ppc=2 and h=1 ppc=4 by 0.04 and 0.02 %); TRADEOFF_RUNS (the runs' folder), TRADEOFF_TXT
 # (the table), PLOT=0 (no figures): tools/bench.sh runs a subset so.
-set -u
-cd "$(dirname "$0")/../.."
-MPM=${MPM:-build/stage5/mpm}
+. "$(dirname "$0")/../lib.sh"
 TIME=${TIME:-2.0}
 SCHEMES=${SCHEMES:-"usl musl usf usavg"}
 CFLS=${CFLS:-"0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.8 0.9 1.0"}
 DCB_GRIDS=${DCB_GRIDS:-"51:2:1,2,3,4 67:1.5:1,2,3,4 101:1:1,2,3,4 133:0.75:2"}
 FEA_H=${FEA_H:-1}
-OUT=build/figures
 RUNS=${TRADEOFF_RUNS:-build/fig-tradeoff}
 txt=${TRADEOFF_TXT:-$OUT/fig-tradeoff.txt}
 FEA=$RUNS/dcb_opening
-mkdir -p "$OUT" "$RUNS"
-load0=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
+mkdir -p "$RUNS"
+load0=$(fig_load)
 
-[ "$MPM" = build/stage5/mpm ] && make --no-print-directory build/stage5/mpm >/dev/null
-[ -x "$MPM" ] || { echo "fig-tradeoff: $MPM not built" >&2; exit 1; }
+fig_mpm 5
 # the FEA links the stage's library and the tests' Q4 solver
 bash figures/fig-tradeoff/dcb_opening.sh 5 "$FEA" || exit 1
-
-# run DIR SCENE [overrides...]: one run; sets rc, loop (s), steps, why
-run() {
-    local dir=$1 scene=$2
-    shift 2
-    rm -rf "$dir"
-    "$MPM" "$scene" -q -o "$dir" run.snapshots=0 "$@" >"$dir.log" 2>&1
-    rc=$?
-    loop=$(sed -nE 's/.* \(([0-9]+) steps in ([0-9.eE+-]+) s.*/\2/p' "$dir.log")
-    steps=$(sed -nE 's/.* \(([0-9]+) steps in ([0-9.eE+-]+) s.*/\1/p' "$dir.log")
-    why=$(sed -nE 's/.*unstable at step [0-9]+ \(t = ([0-9.eE+-]+) ms\).*/unstable at \1 ms/p' "$dir.log")
-    case $rc in
-        0|3) ;;
-        *) cat "$dir.log" >&2; echo "fig-tradeoff: $dir failed (exit $rc)" >&2; exit 1 ;;
-    esac
-}
 
 # pareto < label,group,time,error -> the front, by time
 pareto() {
@@ -84,7 +64,8 @@ for s in $SCHEMES; do
     for c in $CFLS; do
         n=$((n + 1))
         dir=$RUNS/beam-$s-$c
-        run "$dir" figures/fig6/beam_supports.cfg run.update="$s" run.cfl="$c" run.time="$TIME"
+        fig_run "$dir" figures/fig6/beam_supports.cfg run.snapshots=0 run.update="$s" \
+            run.cfl="$c" run.time="$TIME"
         if [ "$rc" = 0 ]; then
             err=$(awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
                 NR == 2 { e0 = $c["total"] }
@@ -95,9 +76,9 @@ for s in $SCHEMES; do
                 "$(awk -v e="$err" 'BEGIN { if (e >= 1) print "E off by over 100 %: blew up, not stopped" }')")")
             echo "fig-tradeoff: beam $n/$total: $s cfl $c: error $err, loop $loop s"
         else
-            rows+=("$(printf '%-6s %4s %7s %8s %10s  %s' "$s" "$c" - - - "${why:-unstable}")")
+            rows+=("$(printf '%-6s %4s %7s %8s %10s  %s' "$s" "$c" - - - "$why")")
             unstable+=("$s $c")
-            echo "fig-tradeoff: beam $n/$total: $s cfl $c: ${why:-unstable}"
+            echo "fig-tradeoff: beam $n/$total: $s cfl $c: $why"
         fi
     done
 done
@@ -124,10 +105,10 @@ for spec in $DCB_GRIDS; do
     for p in ${ppcs//,/ }; do
         n=$((n + 1))
         dir=$RUNS/dcb-$N-$p
-        run "$dir" "$scene" bodies.[0].points_per_cell="$p"
+        fig_run "$dir" "$scene" run.snapshots=0 bodies.[0].points_per_cell="$p"
         if [ "$rc" != 0 ]; then
-            drows+=("$(printf '%-5s %3s %9s  %s' "$dy" "$p" "100/$N" "${why:-unstable}")")
-            echo "fig-tradeoff: dcb $n/$total: h=$dy ppc=$p: ${why:-unstable}"
+            drows+=("$(printf '%-5s %3s %9s  %s' "$dy" "$p" "100/$N" "$why")")
+            echo "fig-tradeoff: dcb $n/$total: h=$dy ppc=$p: $why"
             dunstable+=("h=$dy ppc=$p")
             continue
         fi
@@ -146,7 +127,7 @@ pareto <"$dcb" >"$RUNS/dcb-front.csv"
 # ---- table ---------------------------------------------------------------------
 {
     echo "Error against cost (make fig-tradeoff, $MPM); loop s: the time loop's wall"
-    echo "time as the program reports it, one run at a time, on: $(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)"
+    echo "time as the program reports it, one run at a time, on: $(fig_cpu)"
     echo
     echo "(a) beam impact, figures/fig6/beam_supports.cfg to t = $TIME ms;"
     echo "    error = max |E/E0 - 1| over the run (E = total, 1000 rows)"
@@ -165,7 +146,7 @@ pareto <"$dcb" >"$RUNS/dcb-front.csv"
     echo "Pareto front, by time:"
     awk -F, '{ printf "  %-12s %8s s  %s\n", $1, $3, $4 }' "$RUNS/dcb-front.csv"
     echo
-    echo "load average before the runs: $load0; after: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)"
+    echo "load average before the runs: $load0; after: $(fig_load)"
 } >"$txt"
 cat "$txt"
 [ "${PLOT:-1}" = 0 ] && exit 0
@@ -213,7 +194,7 @@ bnote="triangles: error above 1, drawn at 1"
 dnote="every run reached the static state"
 [ ${#dunstable[@]} -gt 0 ] && dnote="left off, unstable: ${dunstable[*]}"
 
-command -v gnuplot >/dev/null 2>&1 || { echo "fig-tradeoff: no gnuplot; $txt written" >&2; exit 1; }
+fig_need_gnuplot "$txt written, no plot"
 gnuplot -e "data='$RUNS/beam-labels.csv'; front='$RUNS/beam-front.csv'; out='$OUT/fig-tradeoff-beam.png'; \
             names='$SCHEMES'; note='$bnote'; ylab='energy error, max |E/E0 - 1|'; \
             title='Beam impact to $TIME ms (stage 5, contact): energy error against cost, cfl 0.1 to 1'" \

@@ -29,6 +29,8 @@
 #  (c) cost: the wall time of the time loop of the run at a0 (the "N steps
 #      in T s" of the program's last line: no set-up, no output), one run at
 #      a time.  G costs the three runs; the table gives their sum too.
+# A run that goes unstable (exit status 3) is listed as "unstable at t"
+# with its series and grid, which the plot then leaves off.
 #
 # Writes build/figures/fig-xefg-dcb.png (error against cost, log-log: the
 # opening and G, one curve per method, points labelled with h) and
@@ -52,38 +54,20 @@
 # (coarsest FEA mesh, mm; default 1), XDCB_RUNS (the runs' folder),
 # XDCB_TXT (the table), PLOT=0 (no figure): tools/bench_xefg_dcb.sh runs a
 # subset so.
-set -u
-cd "$(dirname "$0")/../.."
-MPM=${MPM:-build/stage6/mpm}
+. "$(dirname "$0")/../lib.sh"
 SERIES=${SERIES:-"mpm xefg mpm:0.1"}
 GRIDS=${GRIDS:-"35:3 51:2 85:1.2"}
 FEA_H=${FEA_H:-1}
-OUT=build/figures
 RUNS=${XDCB_RUNS:-build/fig-xefg-dcb}
 txt=${XDCB_TXT:-$OUT/fig-xefg-dcb.txt}
 FEA=$RUNS/dcb_opening
-mkdir -p "$OUT" "$RUNS"
-load0=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
+mkdir -p "$RUNS"
+load0=$(fig_load)
 
-[ "$MPM" = build/stage6/mpm ] && make --no-print-directory build/stage6/mpm >/dev/null
-[ -x "$MPM" ] || { echo "fig-xefg-dcb: $MPM not built" >&2; exit 1; }
+fig_mpm 6
 # the measure (fig-tradeoff's, with -g) links stage 6's library (XEFG's
 # scenes load there) and the tests' Q4 solver
 bash figures/fig-tradeoff/dcb_opening.sh 6 "$FEA" || exit 1
-
-# run DIR SCENE [overrides...]: one run; sets loop (s) and steps, or fails
-run() {
-    local dir=$1 scene=$2
-    shift 2
-    rm -rf "$dir"
-    if ! "$MPM" "$scene" -q -o "$dir" run.snapshots=0 "$@" >"$dir.log" 2>&1; then
-        cat "$dir.log" >&2
-        echo "fig-xefg-dcb: $dir failed" >&2
-        exit 1
-    fi
-    loop=$(sed -nE 's/.* \(([0-9]+) steps in ([0-9.eE+-]+) s.*/\2/p' "$dir.log")
-    steps=$(sed -nE 's/.* \(([0-9]+) steps in ([0-9.eE+-]+) s.*/\1/p' "$dir.log")
-}
 
 # the scenes: each grid with the tip at a0 - dx, a0, a0 + dx (K = -1, 0, 1)
 for spec in $GRIDS; do
@@ -95,8 +79,12 @@ done
 
 # results.csv, one row per series and grid:
 #   series,method,load,h,N,points,steps,loop,loop3,open,open_fea,open_err,G,G_fea,G_err
+# A series and grid one of whose three runs went unstable (exit status 3)
+# has no row there: its line in the table says so, and the plot leaves it
+# off (the runs after it on that grid are not made).
 res=$RUNS/results.csv
 echo "series,method,load,h,N,points,steps,loop,loop3,open,open_fea,open_err,G,G_fea,G_err" >"$res"
+urows=()
 n=0 total=$(( $(wc -w <<<"$SERIES") * $(wc -w <<<"$GRIDS") * 3 ))
 for series in $SERIES; do
     IFS=: read -r m mN <<<"$series"
@@ -108,12 +96,19 @@ for series in $SERIES; do
     fi
     for spec in $GRIDS; do
         IFS=: read -r N h <<<"$spec"
-        loop3=0
+        loop3=0 unst=""
         for K in -1 0 1; do
             n=$((n + 1))
+            [ -n "$unst" ] && continue
             scene=$RUNS/dcb_${N}_$K.cfg
             dir=$RUNS/$m${mN:+-$mN}-$N-$K
-            run "$dir" "$scene" run.method="$m" ${load[@]+"${load[@]}"}
+            fig_run "$dir" "$scene" run.snapshots=0 run.method="$m" ${load[@]+"${load[@]}"}
+            if [ "$rc" = 3 ]; then
+                unst="$why, the tip at a0$(case $K in -1) echo " - dx" ;; 1) echo " + dx" ;; esac)"
+                echo "fig-xefg-dcb: $n/$total: $series h=$h: $unst"
+                urows+=("$(printf '%-6s %3s %4s %7s  %s' "$m" "${mN:-1}" "$h" "100/$N" "$unst")")
+                continue
+            fi
             loop3=$(awk -v a="$loop3" -v b="$loop" 'BEGIN { print a + b }')
             # pts x0 y0 open f0 f1 f2 order open_fea err tip P B delta d0 d1 d2 dorder delta_fea
             read -r pts x0 y0 om f0 f1 f2 order ref err tip P B dl dl0 dl1 dl2 dorder dref \
@@ -150,27 +145,33 @@ done
     echo "B = 1 mm, central difference over a0 -/+ dx (the FEA's the same way);"
     echo "loop s: the time loop of the run at a0 (the figure's cost); 3 runs: of all"
     echo "three (G's cost); rate: particle-steps/s of the run at a0.  CPU:"
-    echo "$(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo), one run at a time."
+    echo "$(fig_cpu), one run at a time."
     echo
     printf '%-6s %3s %4s %7s %6s %6s %8s %8s %9s %9s %8s %11s %11s %8s %9s\n' method mN h dx \
         points steps "loop s" "3 runs" "open mm" "FEA mm" "open %" "G" "G FEA" "G %" rate
     awk -F, 'NR > 1 { printf "%-6s %3s %4s %7s %6s %6s %8.3f %8.3f %9.5f %9.5f %+8.3f %11.5e %11.5e %+8.3f %9.3g\n",
         $2, $3, $4, "100/" $5, $6, $7, $8, $9, $10, $11, 100 * $12, $13, $14, 100 * $15, $6 * $7 / $8 }' "$res"
+    [ ${#urows[@]} -gt 0 ] && printf '%s\n' "${urows[@]}"
     echo
-    echo "load average before the runs: $load0; after: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)"
+    echo "load average before the runs: $load0; after: $(fig_load)"
 } >"$txt"
 cat "$txt"
 [ "${PLOT:-1}" = 0 ] && exit 0
 
 # plot.csv: the labels of the two panels (h and the signed error), loop s,
 # |opening error|, |G error|; one block per series, in SERIES' order, two
-# blank lines apart (gnuplot's index)
+# blank lines apart (gnuplot's index); a series with no row (every grid
+# unstable) has no block and no curve
+plotted=""
 for series in $SERIES; do
+    awk -F, -v s="$series" '$1 == s { n++ } END { exit !n }' "$res" || continue
+    plotted="$plotted $series"
     awk -F, -v s="$series" '$1 == s { printf "h=%s (%+.3f %%),h=%s (%+.3f %%),%s,%.6e,%.6e\n",
         $4, 100 * $12, $4, 100 * $15, $8, $12 < 0 ? -$12 : $12, $15 < 0 ? -$15 : $15 }' "$res"
     printf '\n\n'
 done >"$RUNS/plot.csv"
-command -v gnuplot >/dev/null 2>&1 || { echo "fig-xefg-dcb: no gnuplot; $txt written" >&2; exit 1; }
-gnuplot -e "data='$RUNS/plot.csv'; out='$OUT/fig-xefg-dcb.png'; series='$SERIES'" \
+[ -n "$plotted" ] || { echo "fig-xefg-dcb: every run unstable, no plot; $txt written" >&2; exit 1; }
+fig_need_gnuplot "$txt written, no plot"
+gnuplot -e "data='$RUNS/plot.csv'; out='$OUT/fig-xefg-dcb.png'; series='${plotted# }'" \
     figures/fig-xefg-dcb/plot.gp || exit 1
 echo "fig-xefg-dcb: $OUT/fig-xefg-dcb.png, $txt"

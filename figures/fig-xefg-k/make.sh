@@ -9,17 +9,16 @@
 # band) and build/figures/fig-xefg-k.txt (the runs and the table).
 #
 # About a minute on one core, mostly W/80 (12800 points).
-set -euo pipefail
-cd "$(dirname "$0")/../.."
+. "$(dirname "$0")/../lib.sh"
+set -eo pipefail
 TEST=build/stage6/tests/6-xefg/scene_edge_crack
-OUT=build/figures
 RUNS=build/fig-xefg-k
-make --no-print-directory "$TEST"
-mkdir -p "$OUT" "$RUNS"
+fig_build "$TEST"
+mkdir -p "$RUNS"
 txt=$OUT/fig-xefg-k.txt
 {
     echo "xefg.md Test 3 (make fig-xefg-k): $TEST, one run at a time, on:"
-    echo "  $(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)"
+    echo "  $(fig_cpu)"
     for n in "10 20 40" "20 40 80"; do
         echo
         echo "== XEFG_K_SPACINGS=\"$n\""
@@ -42,5 +41,6 @@ limit=$(sed -n 's/^# Aitken limit \([0-9.]*\).*/\1/p' "$RUNS/W20-40-80.dat")
 } | tee -a "$txt"
 note=$(awk '!/^#/ { k = $10 < 0 ? -$10 : $10; if (k > kmax) kmax = k; if ($6 > e) e = $6 }
     END { printf "|K_II / K_I| <= %.1e; every run static: KE/SE <= %.1e (and 15 / omega_1 settled)", kmax, e }' "$dat")
+fig_need_gnuplot "$txt written, no plot"
 gnuplot -e "data='$dat'; out='$OUT/fig-xefg-k.png'; F=$F; limit=$limit; note='$note'" figures/fig-xefg-k/plot.gp
 echo "fig-xefg-k: $OUT/fig-xefg-k.png, $txt"

@@ -20,17 +20,13 @@
 #
 # Environment: MPM (default build/stage4/mpm), SCHEMES (default
 # "usl musl usf"), USF_CFL (default 0.05), TIME (simulated ms, default 6).
-set -u
-cd "$(dirname "$0")/../.."
-MPM=${MPM:-build/stage4/mpm}
+. "$(dirname "$0")/../lib.sh"
 SCHEMES=${SCHEMES:-"usl musl usf"}
 USF_CFL=${USF_CFL:-0.05}
 SCENE=figures/fig5/beam_impact_contact.cfg
 ONE_FIELD=figures/fig6/beam_impact.cfg
-OUT=build/figures
 RUNS=$OUT/fig5
-[ "$MPM" = build/stage4/mpm ] && make --no-print-directory build/stage4/mpm >/dev/null
-[ -x "$MPM" ] || { echo "fig5: $MPM not built" >&2; exit 1; }
+fig_mpm 4
 mkdir -p "$RUNS"
 over=(run.history_every=1)
 [ -n "${TIME:-}" ] && over+=("run.time=$TIME")
@@ -40,20 +36,9 @@ over=(run.history_every=1)
 run() {
     local name=$1 scene=$2 scheme=$3
     shift 3
-    local dir=$RUNS/$name
-    rm -rf "$dir"
     echo "fig5: $name ..."
-    local t0 t1 rc
-    t0=$(date +%s%N)
-    "$MPM" "$scene" -q -o "$dir" run.update="$scheme" "${over[@]}" "$@" >"$dir.log" 2>&1
-    rc=$?
-    t1=$(date +%s%N)
-    secs=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f", (b - a) / 1e9 }')
-    case $rc in
-        0) status="ran to the end" ;;
-        3) status=$(sed -nE 's/.*unstable at step [0-9]+ \(t = ([0-9.eE+-]+) ms\).*/unstable at \1 ms/p' "$dir.log" | tail -1) ;;
-        *) cat "$dir.log" >&2; echo "fig5: $name failed (exit $rc)" >&2; exit 1 ;;
-    esac
+    fig_run "$RUNS/$name" "$scene" run.update="$scheme" "${over[@]}" "$@"
+    status=${why:-ran to the end}
     echo "fig5: $name: $status ($secs s)"
 }
 
@@ -92,7 +77,7 @@ measure() {
         }' "$RUNS/$1/history.csv"
 }
 
-start=$(date +%s%N)
+start=$(fig_now)
 rows=()
 for s in $SCHEMES; do
     cfl=0.1
@@ -102,7 +87,7 @@ for s in $SCHEMES; do
 done
 run one-field-musl "$ONE_FIELD" musl
 rows+=("one-field-musl|musl|0.1|$status|$secs")
-end=$(date +%s%N)
+wall=$(fig_since "$start")
 
 summary=$OUT/fig5.txt
 {
@@ -118,20 +103,16 @@ summary=$OUT/fig5.txt
         IFS='|' read -r name scheme cfl st secs <<<"$r"
         measure "$name" "$scheme" "$cfl" "$st" "$secs"
     done
-    ms=$(( (end - start) / 1000000 ))
-    printf 'wall time of the runs: %d.%03d s\n' $((ms / 1000)) $((ms % 1000))
+    echo "wall time of the runs: $wall s"
 } >"$summary"
 cat "$summary"
 
-if ! command -v gnuplot >/dev/null 2>&1; then
-    echo "fig5: gnuplot not found; runs and $summary written, no plot" >&2
-    exit 1
-fi
+fig_need_gnuplot "runs and $summary written, no plot"
 # the blow-up times, for the key
 labels=""
 for s in $SCHEMES; do
-    t=$(sed -nE 's/.*unstable at step [0-9]+ \(t = ([0-9.eE+-]+) ms\).*/\1/p' "$RUNS/contact-$s.log" | tail -1)
-    [ -n "$t" ] && labels="$labels $s:$t"
+    fig_unstable "$RUNS/contact-$s.log"
+    [ -n "$unstable_t" ] && labels="$labels $s:$unstable_t"
 done
 gnuplot -e "runs='$RUNS'; out='$OUT'; blowups='${labels# }'; usfcfl='$USF_CFL'" \
     figures/fig5/plot.gp || exit 1

@@ -11,15 +11,12 @@
 #
 # Environment: MPM (default build/stage1/mpm), SCHEMES (default
 # "usl musl usf"), TIME (simulated ms, default the scene's 6).
-set -u
-cd "$(dirname "$0")/../.."
-MPM=${MPM:-build/stage1/mpm}
+. "$(dirname "$0")/../lib.sh"
 SCHEMES=${SCHEMES:-"usl musl usf"}
 SCENE=figures/fig6/beam_impact.cfg
-OUT=build/figures
 RUNS=$OUT/fig6-onefield
 mkdir -p "$RUNS"
-[ -x "$MPM" ] || { echo "fig6-onefield: $MPM not built" >&2; exit 1; }
+fig_mpm 1
 over=()
 [ -n "${TIME:-}" ] && over+=("run.time=$TIME")
 
@@ -36,19 +33,11 @@ summary=$OUT/fig6_onefield_summary.txt
 
 for s in $SCHEMES; do
     dir=$RUNS/$s
-    rm -rf "$dir"
     echo "fig6-onefield: $s ..."
-    t0=$(date +%s.%N)
-    "$MPM" "$SCENE" -q -o "$dir" run.update="$s" "${over[@]}" >"$dir.log" 2>&1
-    rc=$?
-    t1=$(date +%s.%N)
-    case $rc in
-        0) status="ran to the end" ;;
-        3) status=$(sed -nE 's/.*unstable at step [0-9]+ \(t = ([0-9.eE+-]+) ms\).*/unstable at t = \1 ms/p' "$dir.log" | tail -1) ;;
-        *) cat "$dir.log" >&2; echo "fig6-onefield: $s failed (exit $rc)" >&2; exit 1 ;;
-    esac
-    printf 'fig6-onefield: %s: %s (%.0f s)\n' "$s" "$status" \
-        "$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')"
+    fig_run "$dir" "$SCENE" run.update="$s" ${over[@]+"${over[@]}"}
+    status="ran to the end"
+    [ "$rc" = 3 ] && status=${why/#unstable at /unstable at t = }   # "unstable at t = 1.2 ms"
+    printf 'fig6-onefield: %s: %s (%.0f s)\n' "$s" "$status" "$secs"
     # E/E0 at whole milliseconds (last row at or before), and min/max over
     # the rows written before any blow-up (|E/E0 - 1| < 10)
     awk -F, -v s="$s" -v st="$status" '
@@ -102,10 +91,9 @@ turn() {
 # the same MUSL run with the impactor at 87 g (the other reading of the
 # scan's "?87 g"): thickness 51.10 mm
 m87=$RUNS/musl-87g
-rm -rf "$m87"
 echo "fig6-onefield: musl, 87 g ..."
-"$MPM" "$SCENE" -q -o "$m87" run.update=musl "bodies.[1].thickness=51.10" "${over[@]}" \
-    >"$m87.log" 2>&1 || { cat "$m87.log" >&2; echo "fig6-onefield: musl 87 g failed" >&2; exit 1; }
+fig_try "$m87" "$SCENE" run.update=musl "bodies.[1].thickness=51.10" ${over[@]+"${over[@]}"}
+[ "$rc" = 0 ] || fig_failed "$m87"
 {
     echo "Impactor: first shared node, its turning point (least kinetic energy K/K0)"
     echo "and the peak it climbs back to:"
@@ -131,13 +119,10 @@ cat "$summary"
 # the blow-up times, for labels on the plot
 labels=""
 for s in $SCHEMES; do
-    t=$(sed -nE 's/.*unstable at step [0-9]+ \(t = ([0-9.eE+-]+) ms\).*/\1/p' "$RUNS/$s.log" | tail -1)
-    [ -n "$t" ] && labels="$labels $s:$t"
+    fig_unstable "$RUNS/$s.log"
+    [ -n "$unstable_t" ] && labels="$labels $s:$unstable_t"
 done
 
-if ! command -v gnuplot >/dev/null 2>&1; then
-    echo "fig6-onefield: gnuplot not found; runs and $summary written, no plot" >&2
-    exit 1
-fi
+fig_need_gnuplot "runs and $summary written, no plot"
 gnuplot -e "runs='$RUNS'; out='$OUT'; blowups='${labels# }'" figures/fig6-onefield/plot.gp || exit 1
 echo "fig6-onefield: wrote $OUT/fig6_onefield.png, $OUT/fig6_onefield_scene.png and $summary"

@@ -18,15 +18,11 @@
 #
 # Environment: MPM (default build/stage5/mpm), SCHEMES (default
 # "usl musl usf usavg"), TIME (simulated ms, default the scene's 6).
-set -u
-cd "$(dirname "$0")/../.."
-MPM=${MPM:-build/stage5/mpm}
+. "$(dirname "$0")/../lib.sh"
 SCHEMES=${SCHEMES:-"usl musl usf usavg"}
 SCENE=figures/fig6/beam_supports.cfg
-OUT=build/figures
 RUNS=$OUT/fig6
-[ "$MPM" = build/stage5/mpm ] && make --no-print-directory build/stage5/mpm >/dev/null
-[ -x "$MPM" ] || { echo "fig6: $MPM not built" >&2; exit 1; }
+fig_mpm 5
 mkdir -p "$RUNS"
 over=(run.history_every=1)
 [ -n "${TIME:-}" ] && over+=("run.time=$TIME")
@@ -36,21 +32,11 @@ over=(run.history_every=1)
 
 # run SCHEME: one run into $RUNS/SCHEME; sets status, tfail and secs
 run() {
-    local s=$1 dir=$RUNS/$1 t0 t1 rc
-    rm -rf "$dir"
+    local s=$1
     echo "fig6: $s ..."
-    t0=$(date +%s%N)
-    "$MPM" "$SCENE" -q -o "$dir" run.update="$s" "${over[@]}" >"$dir.log" 2>&1
-    rc=$?
-    t1=$(date +%s%N)
-    secs=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f", (b - a) / 1e9 }')
-    tfail=""
-    case $rc in
-        0) status="ran" ;;
-        3) tfail=$(sed -nE 's/.*unstable at step [0-9]+ \(t = ([0-9.eE+-]+) ms\).*/\1/p' "$dir.log" | tail -1)
-           status="unstable at $tfail ms" ;;
-        *) cat "$dir.log" >&2; echo "fig6: $s failed (exit $rc)" >&2; exit 1 ;;
-    esac
+    fig_run "$RUNS/$s" "$SCENE" run.update="$s" "${over[@]}"
+    tfail=$unstable_t
+    status=${why:-ran}
     echo "fig6: $s: $status ($secs s)"
 }
 
@@ -97,7 +83,7 @@ measure() {
         }' "$RUNS/$1/history.csv"
 }
 
-start=$(date +%s%N)
+start=$(fig_now)
 rows=()
 labels=""
 for s in $SCHEMES; do
@@ -105,7 +91,7 @@ for s in $SCHEMES; do
     rows+=("$s|$status|$secs")
     [ -n "$tfail" ] && labels="$labels $s:$tfail"
 done
-end=$(date +%s%N)
+wall=$(fig_since "$start")
 
 summary=$OUT/fig6.txt
 {
@@ -125,14 +111,10 @@ summary=$OUT/fig6.txt
     done
     echo "Steps (0.1 ms windows in which E/E0 changes by more than 0.001, merged):"
     for r in "${rows[@]}"; do cat "$RUNS/${r%%|*}/steps.txt"; done
-    ms=$(( (end - start) / 1000000 ))
-    printf 'wall time of the runs: %d.%03d s\n' $((ms / 1000)) $((ms % 1000))
+    echo "wall time of the runs: $wall s"
 } >"$summary"
 cat "$summary"
 
-if ! command -v gnuplot >/dev/null 2>&1; then
-    echo "fig6: gnuplot not found; runs and $summary written, no plot" >&2
-    exit 1
-fi
+fig_need_gnuplot "runs and $summary written, no plot"
 gnuplot -e "runs='$RUNS'; out='$OUT'; blowups='${labels# }'" figures/fig6/plot.gp || exit 1
 echo "fig6: wrote $OUT/fig6.png, $OUT/fig6_scene.png and $summary"
