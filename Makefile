@@ -207,7 +207,9 @@ check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) bui
              $(REPLAY) $(EXERCISE_BINS)
 
 # ---- book, figures, bench ----------------------------------------------------
-# the chapters show these figures (about thirty-two minutes to draw)
+# the chapters show these figures (about thirty-two minutes to draw) and
+# include the tables their scripts write (build/figures/*.txt, on doxygen's
+# EXAMPLE_PATH: a missing one is a warning, so an error)
 DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-slide,$(notdir $(wildcard figures/fig*)))
 # MathJax is copied into the book (not linked), so that it can be moved or
 # served as it is; its sources (unpacked), tests and combined configurations
@@ -229,7 +231,8 @@ docs:
 # only when what it reads has changed: its folder (make.sh, plots, scenes),
 # figures/lib.sh (what the scripts share), the programs it runs (FIG_RUN_x)
 # and its other inputs (FIG_USES_x); the
-# other files of FIG_OUT_x come with the first. `make x` is the same.
+# other files of FIG_OUT_x come with the first (a figure's table that a
+# chapter includes is one of them). `make x` is the same.
 # A figure folder not listed here: x.png, remade after any stage. REDRAW=1
 # remakes the figures named whatever their age.
 FIG_OUT_fig1 := fig1.png
@@ -242,29 +245,29 @@ FIG_USES_fig2 := figures/fig1/dcb_full.cfg figures/fig1/dcb_half.cfg
 FIG_OUT_fig-patch := fig-patch.png fig-patch.txt
 FIG_RUN_fig-patch := build/stage2/mpm
 FIG_USES_fig-patch := figures/fig1/dcb_full.cfg figures/fig1/dcb_half.cfg
-FIG_OUT_fig3 := fig3.png fig3-openings.png
+FIG_OUT_fig3 := fig3.png fig3-openings.png fig3.txt
 FIG_RUN_fig3 := build/stage4/mpm build/stage4/tests/4-contact/scene_fig3
-FIG_OUT_fig4 := fig4.png fig4-contact.png
+FIG_OUT_fig4 := fig4.png fig4-contact.png fig4.txt
 FIG_RUN_fig4 := build/stage4/mpm build/stage4/tests/4-contact/scene_fig4
-FIG_OUT_fig5 := fig5.png
+FIG_OUT_fig5 := fig5.png fig5.txt
 FIG_RUN_fig5 := build/stage4/mpm
 FIG_USES_fig5 := figures/fig6/beam_impact.cfg
-FIG_OUT_fig6 := fig6.png fig6_scene.png
+FIG_OUT_fig6 := fig6.png fig6_scene.png fig6.txt
 FIG_RUN_fig6 := build/stage5/mpm
-FIG_OUT_fig6-onefield := fig6_onefield.png fig6_onefield_scene.png
+FIG_OUT_fig6-onefield := fig6_onefield.png fig6_onefield_scene.png fig6_onefield_summary.txt
 FIG_RUN_fig6-onefield := build/stage1/mpm
 FIG_USES_fig6-onefield := figures/fig6/beam_impact.cfg
 FIG_OUT_fig-crossing := fig-crossing.png
 FIG_RUN_fig-crossing := build/stage3/mpm
 FIG_USES_fig-crossing := figures/fig1/dcb_full.cfg tools/task1_cost.sh \
     $(addprefix tools/bench/,dcb_crack_2x.cfg dcb_crack.cfg dcb_nocrack.cfg)
-FIG_OUT_fig-stability := fig-stability.png
+FIG_OUT_fig-stability := fig-stability.png fig-stability.txt
 FIG_RUN_fig-stability := build/stage5/mpm
 FIG_USES_fig-stability := figures/fig6/beam_supports.cfg
-FIG_OUT_fig-tip := fig-tip.png
+FIG_OUT_fig-tip := fig-tip.png fig-tip.txt
 FIG_RUN_fig-tip := build/stage3/mpm build/stage3/tests/3-crossing/scene_tip_on_node
 FIG_USES_fig-tip := $(wildcard tests/3-crossing/scenes/tip_*.cfg)
-FIG_OUT_fig-tradeoff := fig-tradeoff-beam.png fig-tradeoff-dcb.png
+FIG_OUT_fig-tradeoff := fig-tradeoff-beam.png fig-tradeoff-dcb.png fig-tradeoff.txt
 FIG_RUN_fig-tradeoff := build/stage5/mpm build/stage5/libmpm.a build/stage5/tests/support/q4.o
 FIG_USES_fig-tradeoff := figures/fig6/beam_supports.cfg figures/fig1/dcb_full.cfg tests/support/q4.h
 FIG_OUT_fig-slide := fig-slide.png fig-slide.txt
