@@ -15,6 +15,10 @@
 #     <div class="fragment">: they quote files and output as they are);
 #     inline code is not (the book shows no Doxygen syntax as code, and a
 #     formula in backquotes shows raw);
+#   - a quoted file that showed nothing: an empty code block (\dontinclude's
+#     \skip, \until or \line found no line with its pattern, say after a
+#     figure script changed what it prints, or \verbinclude read an empty
+#     file), which Doxygen does not warn about;
 #   - a page of chapters/ missing from the side tree (navtreedata.js), out
 #     of book order (the front page's \subpage list, then any other page,
 #     before every other entry), or listed under another title than its
@@ -56,6 +60,10 @@ find "$HTML" -type l | while read -r l; do bad "symlink $l"; done
 # raw table rows
 grep -n -E '<p[^>]*>[[:space:]]*\|' "$HTML"/*.html | cut -c1-150 |
     while IFS= read -r l; do bad "raw Markdown table row: ${l#"$HTML"/}"; done
+
+# empty code blocks: an include that selected no line
+grep -n -o -E '<div class="fragment">[[:space:]]*</div>|<pre class="fragment">[[:space:]]*</pre>' "$HTML"/*.html |
+    while IFS= read -r l; do bad "empty code block (an include whose patterns matched no line): ${l#"$HTML"/}"; done
 
 # formula macros against the TeX jax's tables
 if [ ! -f "$JAX" ]; then
