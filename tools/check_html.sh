@@ -63,7 +63,7 @@ grep -n -E '<p[^>]*>[[:space:]]*\|' "$HTML"/*.html | cut -c1-150 |
 
 # empty code blocks: an include that selected no line
 grep -n -o -E '<div class="fragment">[[:space:]]*</div>|<pre class="fragment">[[:space:]]*</pre>' "$HTML"/*.html |
-    while IFS= read -r l; do bad "empty code block (an include whose patterns matched no line): ${l#"$HTML"/}"; done
+    while IFS= read -r l; do bad "empty code block (an include of a missing or empty file, or whose patterns matched no line): ${l#"$HTML"/}"; done
 
 # formula macros against the TeX jax's tables
 if [ ! -f "$JAX" ]; then
