@@ -47,12 +47,19 @@ void extrapolate(Sim *sim, unsigned what)
     for (int p = 0; p < P->n; p++) {
         Stencil st;
         stencil_of_point(sim, p, &st);
-        if (what & (EXTRAP_MASS | EXTRAP_MOMENTUM)) {
+        /* one loop for each case, so that the test is not made per node */
+        if (what & EXTRAP_MASS) {
             double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
             for (int a = 0; a < STENCIL_NODES; a++) {
                 int s = st.slot[a];
-                if (what & EXTRAP_MASS)
-                    g->m[s] += mp * st.S[a];            /* eq. 26 */
+                g->m[s] += mp * st.S[a];                /* eq. 26 */
+                g->px[s] += qx * st.S[a];
+                g->py[s] += qy * st.S[a];
+            }
+        } else if (what & EXTRAP_MOMENTUM) {            /* eq. 31 */
+            double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
+            for (int a = 0; a < STENCIL_NODES; a++) {
+                int s = st.slot[a];
                 g->px[s] += qx * st.S[a];
                 g->py[s] += qy * st.S[a];
             }
