@@ -16,12 +16,12 @@
  *   mass and step (test_energy_balance's free fall): a relative error of
  *   about 1 / (steps), +0.13 % on the 1 mm grid's 860 steps, +0.065 % on
  *   the 0.5 mm grid's. Measured when written (0.5 mm): frictionless
- *   +0.066 % (USAVG and MUSL), mu = 0.3 +0.25 % (USAVG), +0.19 % (MUSL).
+ *   +0.066 % (USAVG and MUSL), mu = 0.3 +0.25 % (USAVG), +0.20 % (MUSL).
  * - A block sliding to rest on a flat plate
  *   (tests/5-usavg/scenes/block_to_rest.cfg, 1 mm/ms, 20 ms):
  *   frictionless (it slides on) within 0.1 % (measured +0.005 %); mu = 0.3,
- *   USAVG and MUSL at cfl 0.5 and 0.25, within 1 % (measured +0.75, +0.60,
- *   +0.59, +0.71 %). What is left is the normal approach that contact
+ *   USAVG and MUSL at cfl 0.5 and 0.25, within 1 % (measured +0.73, +0.62,
+ *   +0.64, +0.73 %). What is left is the normal approach that contact
  *   stops while the braked block rocks on the plate: counting the normal
  *   part of the impulse as well leaves +0.01 to -0.09 %; it is not
  *   friction, and frictionless contact must count nothing.
