@@ -70,6 +70,7 @@ static const SameCase cases[] = {
     {"tests/4-contact/scenes/bars_touching.cfg", "0.1", 4},
     {"tests/4-contact/scenes/bars_impedance.cfg", "0.1", 4},
     {"tests/5-usavg/scenes/block_to_rest.cfg", "0.5", 4},
+    {"tests/5-usavg/scenes/vibrating_bar.cfg", "2.0", 1},
 };
 
 /** Scenes of the repository that no earlier stage runs or that another

@@ -3,6 +3,7 @@
  * @brief Helpers shared by the test programs.
  */
 #include <dirent.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -142,6 +143,21 @@ void tk_steps(Sim *sim, long n)
         if (sim_advance(sim))
             fail_msg("unstable at step %ld: particle %d %s = %g", sim->fail.step,
                      sim->fail.particle, sim->fail.quantity, sim->fail.value);
+}
+
+double tk_energy_drift(Sim *sim, double *umax)
+{
+    Totals t0 = sim_totals(sim);
+    double e0 = t0.kinetic + t0.strain, worst = 0, u = 0;
+    while (sim->step < sim->nsteps) {
+        tk_steps(sim, 1);
+        Totals t = sim_totals(sim);
+        worst = fmax(worst, fabs((t.kinetic + t.strain) / e0 - 1));
+        u = fmax(u, t.strain / e0);
+    }
+    if (umax)
+        *umax = u;
+    return worst;
 }
 
 char *tk_slurp(const char *path, size_t *len)

@@ -95,4 +95,9 @@ char *tk_slurp(const char *path, size_t *len);
 /** @brief Take @p n steps; fail the test if the run goes unstable. */
 void tk_steps(Sim *sim, long n);
 
+/** @brief Run @p sim to its end (failing the test if it goes unstable) and
+ *         return the largest |E/E0 - 1| over its steps, E = kinetic +
+ *         strain; the largest strain energy over E0 in @p umax (or NULL). */
+double tk_energy_drift(Sim *sim, double *umax);
+
 #endif
