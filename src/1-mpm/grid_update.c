@@ -115,7 +115,8 @@ void grid_prescribe(Sim *sim, Seam seam)
     Grid *g = &sim->grid;
     const FieldTable *F = &sim->fields;
     int task4 = seam == SEAM_TASK4_CONTACT;
-    double t0 = sim->t, t = seam == SEAM_TASK2_CONTACT ? t0 : t0 + sim->dt;
+    int start = seam == SEAM_TASK2_HELD || seam == SEAM_TASK2_CONTACT;
+    double t0 = sim->t, t = start ? t0 : t0 + sim->dt;
     for (int k = 0; k < sim->nmoving; k++) {          /* moving boundaries */
         const Hold *h = &sc->bc[sim->moving_bc[k]].hold;
         double v0[2], v[2];

@@ -36,6 +36,8 @@ struct SceneReader;
 typedef enum Seam {
     SEAM_PREPARE,        /**< after points and grid exist: checks, set-up */
     SEAM_TASK1_FIELDS,   /**< Task 1: key each pair's velocity field */
+    SEAM_TASK2_HELD,     /**< Task 2, before a stress update (USF, USAVG):
+                              the contact the last step decided */
     SEAM_TASK2_CONTACT,  /**< Task 2: adjust momenta (contact) */
     SEAM_TASK4_CONTACT,  /**< Task 4: adjust momenta after p += dt f */
     SEAM_TASK6_CONTACT,  /**< Task 6: adjust re-extrapolated momenta */
@@ -53,9 +55,9 @@ typedef enum Seam {
 /** The seams a step runs (Tasks 1-7); the others belong to the program
  *  around it (set-up, output, checkpoint) and run under every method. */
 #define SEAMS_OF_STEP                                                     \
-    (SEAM_BIT(SEAM_TASK1_FIELDS) | SEAM_BIT(SEAM_TASK2_CONTACT) |         \
-     SEAM_BIT(SEAM_TASK4_CONTACT) | SEAM_BIT(SEAM_TASK6_CONTACT) |        \
-     SEAM_BIT(SEAM_TASK7))
+    (SEAM_BIT(SEAM_TASK1_FIELDS) | SEAM_BIT(SEAM_TASK2_HELD) |            \
+     SEAM_BIT(SEAM_TASK2_CONTACT) | SEAM_BIT(SEAM_TASK4_CONTACT) |         \
+     SEAM_BIT(SEAM_TASK6_CONTACT) | SEAM_BIT(SEAM_TASK7))
 
 /** The scene key whose reading subscribed (section "" for a top-level
  *  one), and the line of its setting; key NULL: a subscriber not made by

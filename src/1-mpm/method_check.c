@@ -29,6 +29,7 @@ static const char *seam_names(unsigned mask, char *buf, size_t len)
 {
     static const struct { Seam seam; const char *name; } names[] = {
         {SEAM_TASK1_FIELDS, "Task 1 fields"},
+        {SEAM_TASK2_HELD, "Task 2 held contact"},
         {SEAM_TASK2_CONTACT, "Task 2 contact"},
         {SEAM_TASK4_CONTACT, "Task 4 contact"},
         {SEAM_TASK6_CONTACT, "Task 6 contact"},

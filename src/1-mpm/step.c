@@ -32,14 +32,17 @@ int sim_step(Sim *sim)
     extrapolate(sim, EXTRAP_MASS | (us->before > 0 ? 0u : EXTRAP_FORCE));
 
     grid_velocities(sim);                         /* Task 2 */
-    if (grid_contact(sim, SEAM_TASK2_CONTACT))
-        return -1;
-    grid_prescribe(sim, SEAM_TASK2_CONTACT);      /* moving boundaries */
     if (us->before > 0) {                         /* USF (and USAVG) */
+        if (grid_contact(sim, SEAM_TASK2_HELD))   /* the last step's contact */
+            return -1;
+        grid_prescribe(sim, SEAM_TASK2_HELD);
         if (update_stress(sim, us->before * dt))
             return -1;
         extrapolate(sim, EXTRAP_FORCE);           /* Task 3 */
     }
+    if (grid_contact(sim, SEAM_TASK2_CONTACT))    /* what the update starts from */
+        return -1;
+    grid_prescribe(sim, SEAM_TASK2_CONTACT);      /* moving boundaries */
 
     grid_momentum_update(sim);                    /* Tasks 3-4 */
     if (grid_contact(sim, SEAM_TASK4_CONTACT))

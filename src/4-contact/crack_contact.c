@@ -21,8 +21,9 @@ int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     const Scene *sc = &sim->scene;
     C->normals = 1;                          /* Task 1 adds crack normals */
     S->vnode = calloc((size_t)sim->grid.nnodes, sizeof(double));
-    S->held = calloc((size_t)sim->grid.nnodes, sizeof(unsigned));
-    if (fields_want_normals(sim) || !S->vnode || !S->held) {
+    S->volumes_step = -1;
+    if (fields_want_normals(sim) || !S->vnode ||
+        contact_decision_alloc(&S->decision, sim->grid.nnodes)) {
         snprintf(err, errlen, "%s: out of memory for crack contact", sc->file);
         return -1;
     }
@@ -145,13 +146,18 @@ static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
     unsigned bit = S->pair < 32 ? 1u << S->pair : 0u;
     S->pair++;
     if (S->seam == SEAM_TASK6_CONTACT) {     /* the step's decision */
-        if (!(S->held[S->node] & bit))
+        if (!contact_decision_held(&S->decision, S->node, bit, sim->step))
+            return;
+    } else if (S->seam == SEAM_TASK2_HELD &&
+               cc->law.kind != CONTACT_BONDED) {   /* the last step's */
+        if (!contact_decision_held(&S->decision, S->node, bit, sim->step - 1) ||
+            !contact_pair_approach(g, a, b, n))
             return;
     } else if (!contact_pair_detected(g, a, b, n, vnode / cc->vcell, opening,
                                        sim->dt, &cc->law)) {  /* at the step's end */
         return;
     } else if (S->seam == SEAM_TASK4_CONTACT) {
-        S->held[S->node] |= bit;
+        contact_decision_hold(&S->decision, S->node, bit);
     }
     double dp[2];
     int slides = contact_adjust(g, a, b, n, &cc->law, dp);
@@ -198,10 +204,10 @@ int crack_contact_task(Sim *sim, void *state, Seam seam)
     const Grid *g = &sim->grid;
     const Cracks *C = cracks_of(sim);
     unsigned side_mask = 3u << C->side_shift;
-    if (seam == SEAM_TASK2_CONTACT) {        /* a new step */
-        S->nodes = 0;
+    if (S->volumes_step != sim->step) {      /* the step's first contact */
         if (node_volumes(sim, S))
             return -1;
+        S->volumes_step = sim->step;
     }
     S->task_nodes = 0;
     for (int k = 0; k < F->ntouched; k++) {
@@ -211,7 +217,7 @@ int crack_contact_task(Sim *sim, void *state, Seam seam)
         S->node = n;
         S->pair = 0;
         if (seam == SEAM_TASK4_CONTACT)
-            S->held[n] = 0;
+            contact_decision_begin(&S->decision, n, sim->step);
         /* a node's slots are sorted by key: those of one body (the key's
            bits beyond the crack side) come together, sides 0, 1, 2 */
         for (int s = n; s >= 0;) {
@@ -225,7 +231,7 @@ int crack_contact_task(Sim *sim, void *state, Seam seam)
         }
         S->task_nodes += adjusted;
     }
-    if (S->task_nodes > S->nodes)
+    if (seam == SEAM_TASK4_CONTACT)          /* the step's decision */
         S->nodes = S->task_nodes;
     return 0;
 }
@@ -253,6 +259,7 @@ int crack_contact_checkpoint(Sim *sim, void *state, FILE *f, int save)
     size_t n = (size_t)sim->pts.n * sizeof(double);
     return checkpoint_io(f, &S->work, sizeof S->work, save) ||
            checkpoint_io(f, &S->nodes, sizeof S->nodes, save) ||
+           contact_decision_checkpoint(&S->decision, f, save) ||
            (S->opening && (checkpoint_io(f, S->x0, n, save) ||
                            checkpoint_io(f, S->y0, n, save))) ? -1 : 0;
 }

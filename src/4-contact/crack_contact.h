@@ -7,6 +7,7 @@
 #ifndef MPM_CRACK_CONTACT_H
 #define MPM_CRACK_CONTACT_H
 
+#include "contact_decision.h"
 #include "contact_settings.h"
 #include "cracks.h"
 
@@ -33,13 +34,12 @@ typedef struct ContactState {
                                x0_p, at touched nodes) */
     double *uy;           /**< per slot: the same, y */
     int cap;              /**< slots of ux, uy */
-    unsigned *held;       /**< per node: bit k set when its k-th pair of
-                               fields was in contact at Task 4 (Task 6
-                               keeps that decision) */
+    ContactDecision decision; /**< the pairs in contact at Task 4 */
+    long volumes_step;    /**< the step whose node volumes are found (-1: none) */
     Seam seam;            /**< the task being done */
     int node;             /**< the node being visited */
     int pair;             /**< pairs of fields met at that node so far */
-    int nodes;            /**< most nodes adjusted at one task of this step */
+    int nodes;            /**< nodes in contact at this step's decision (Task 4) */
     int task_nodes;       /**< nodes adjusted at the current task */
     double work;          /**< work done by contact since the start (mJ) */
 } ContactState;

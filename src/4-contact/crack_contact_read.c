@@ -25,6 +25,7 @@ static ContactState *contact_state(Sim *sim)
     }
     Hooks *h = &sim->hooks;
     if (hooks_on_prepare(h, crack_contact_prepare, S) ||
+        hooks_on_step(h, SEAM_TASK2_HELD, crack_contact_task, S) ||
         hooks_on_step(h, SEAM_TASK2_CONTACT, crack_contact_task, S) ||
         hooks_on_step(h, SEAM_TASK4_CONTACT, crack_contact_task, S) ||
         hooks_on_step(h, SEAM_TASK6_CONTACT, crack_contact_task, S) ||
@@ -71,6 +72,6 @@ void crack_contact_release(void *state)
     free(S->y0);
     free(S->ux);
     free(S->uy);
-    free(S->held);
+    contact_decision_free(&S->decision);
     free(S);
 }

@@ -32,9 +32,10 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     M->area = calloc((size_t)nn, sizeof(double));
     M->cx = calloc((size_t)nn * CONTACT_AXES, sizeof(double));
     M->cy = calloc((size_t)nn * CONTACT_AXES, sizeof(double));
-    M->held = calloc((size_t)nn, sizeof(unsigned));
+    M->geometry_step = -1;
     if (M->shift < 0 || fields_enable(sim) || !M->cell_groups || !M->mixed ||
-        !M->near || !M->area || !M->cx || !M->cy || !M->held) {
+        !M->near || !M->area || !M->cx || !M->cy ||
+        contact_decision_alloc(&M->decision, nn)) {
         snprintf(err, errlen, "%s: out of memory (or field-key bits) for "
                  "contact between bodies", sim->scene.file);
         return -1;
@@ -306,10 +307,10 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
     const FieldTable *F = &sim->fields;
     Grid *g = &sim->grid;
     unsigned gmask = M->group_mask;
-    if (seam == SEAM_TASK2_CONTACT) {           /* a new step */
-        M->nodes = 0;
+    if (M->geometry_step != sim->step) {        /* the step's first contact */
         if (interface_geometry(sim, M))
             return -1;
+        M->geometry_step = sim->step;
     }
     M->task_nodes = 0;
     double cell = g->dx * g->dy;
@@ -317,7 +318,7 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
         int n = F->touched[k], adjusted = 0, pair = 0;
         double vrel = M->area[n] / cell;        /* eq. 10, per unit thickness */
         if (seam == SEAM_TASK4_CONTACT)
-            M->held[n] = 0;
+            contact_decision_begin(&M->decision, n, sim->step);
         for (int a = n; a >= 0; a = field_next(F, g, a)) {
             unsigned ka = field_key(F, g, a);
             for (int b = field_next(F, g, a); b >= 0 && g->m[a] > 0;
@@ -334,13 +335,18 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
                 if (law->kind != CONTACT_BONDED && !pair_axis(M, n, a, b, law, nrm, &gap))
                     continue;
                 if (seam == SEAM_TASK6_CONTACT) {   /* the step's decision */
-                    if (!(M->held[n] & bit))
+                    if (!contact_decision_held(&M->decision, n, bit, sim->step))
+                        continue;
+                } else if (seam == SEAM_TASK2_HELD &&
+                           law->kind != CONTACT_BONDED) {   /* the last step's */
+                    if (!contact_decision_held(&M->decision, n, bit, sim->step - 1) ||
+                        !contact_pair_approach(g, a, b, nrm))
                         continue;
                 } else if (!contact_pair_detected(g, a, b, nrm, vrel, gap, sim->dt,
                                                   law)) {   /* at the step's end */
                     continue;
                 } else if (seam == SEAM_TASK4_CONTACT) {
-                    M->held[n] |= bit;
+                    contact_decision_hold(&M->decision, n, bit);
                 }
                 double dp[2];
                 int slides = contact_adjust(g, a, b, nrm, law, dp);
@@ -351,7 +357,7 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
         }
         M->task_nodes += adjusted;
     }
-    if (M->task_nodes > M->nodes)
+    if (seam == SEAM_TASK4_CONTACT)          /* the step's decision */
         M->nodes = M->task_nodes;
     return 0;
 }
@@ -401,5 +407,6 @@ int material_contact_checkpoint(Sim *sim, void *state, FILE *f, int save)
     (void)sim;
     MaterialContact *M = state;
     return checkpoint_io(f, &M->work, sizeof M->work, save) ||
-           checkpoint_io(f, &M->nodes, sizeof M->nodes, save) ? -1 : 0;
+           checkpoint_io(f, &M->nodes, sizeof M->nodes, save) ||
+           contact_decision_checkpoint(&M->decision, f, save) ? -1 : 0;
 }

@@ -16,6 +16,7 @@
 
 #include <stdio.h>
 
+#include "contact_decision.h"
 #include "contact_settings.h"
 #include "sim.h"
 
@@ -62,11 +63,10 @@ typedef struct MaterialContact {
     int reach;            /**< a pair detects by a gap: the candidates and
                                reaches are found (else the normal is
                                contact_interface_normal()'s) */
-    unsigned *held;       /**< per node: bit k set when its k-th pair of
-                               fields was in contact at Task 4 (Task 6
-                               keeps that decision) */
+    ContactDecision decision; /**< the pairs in contact at Task 4 */
+    long geometry_step;   /**< the step whose geometry is found (-1: none) */
     int cap;              /**< slots of gx, gy, va, lo, hi */
-    int nodes;            /**< most nodes adjusted at one task of this step */
+    int nodes;            /**< nodes in contact at this step's decision (Task 4) */
     int task_nodes;       /**< nodes adjusted at the current task */
     double work;          /**< work done by material contact (mJ) */
 } MaterialContact;

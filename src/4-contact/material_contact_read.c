@@ -179,6 +179,7 @@ int material_contact_read(Sim *sim, const config_setting_t *s, int index,
         Hooks *h = &sim->hooks;
         if (hooks_on_prepare(h, material_contact_prepare, M) ||
             hooks_on_step(h, SEAM_TASK1_FIELDS, material_key_fields, M) ||
+            hooks_on_step(h, SEAM_TASK2_HELD, material_contact_task, M) ||
             hooks_on_step(h, SEAM_TASK2_CONTACT, material_contact_task, M) ||
             hooks_on_step(h, SEAM_TASK4_CONTACT, material_contact_task, M) ||
             hooks_on_step(h, SEAM_TASK6_CONTACT, material_contact_task, M) ||
@@ -197,7 +198,7 @@ int material_contact_read(Sim *sim, const config_setting_t *s, int index,
 void material_contact_release(void *state)
 {
     MaterialContact *M = state;
-    free(M->held);
+    contact_decision_free(&M->decision);
     free(M->name);
     free(M->body_group);
     free(M->group_of_body);

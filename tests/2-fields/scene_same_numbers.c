@@ -69,6 +69,9 @@ static const SameCase cases[] = {
     {"tests/4-contact/scenes/bars_gap.cfg", "0.1", 4},
     {"tests/4-contact/scenes/bars_touching.cfg", "0.1", 4},
     {"tests/4-contact/scenes/bars_impedance.cfg", "0.1", 4},
+    {"tests/4-contact/scenes/bars_one_field.cfg", "0.1", 1},
+    {"tests/4-contact/scenes/bars_impedance_one_field.cfg", "0.1", 1},
+    {"tests/4-contact/scenes/bar_flying.cfg", "2.5", 1},
     {"tests/5-usavg/scenes/block_to_rest.cfg", "0.5", 4},
     {"tests/5-usavg/scenes/vibrating_bar.cfg", "2.0", 1},
 };
