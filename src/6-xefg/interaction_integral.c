@@ -90,6 +90,15 @@ int xefg_stress_intensity(const Sim *sim, int crack, int end, double radius,
     crack_line_tip(c, end, tip, dir);
     /* the tip's frame: e1 = dir (ahead), e2 = its left normal */
     double e[2][2] = {{dir[0], dir[1]}, {-dir[1], dir[0]}};
+    /* crack_line_side() is +1 left of the crack walked from point 0 to
+     * n - 1. At end 1, dir runs that way and e2 points to that side; at
+     * end 0, dir points back along the crack (crack_line_tip()), so e2 is
+     * the walk's right normal and a point's side in the tip's frame is
+     * minus crack_line_side(). Williams' theta (Anderson, ch. 2) is
+     * measured from e1 towards e2: without the turn the auxiliary fields
+     * at end 0 were mirrored, K_I came out near 0 and K_II with the wrong
+     * sign (issue 27). */
+    int turn = end == 0 ? -1 : 1;
     const Particles *P = &sim->pts;
     int mat = -1, used = 0;
     double I[2] = {0.0, 0.0};
@@ -106,8 +115,8 @@ int xefg_stress_intensity(const Sim *sim, int crack, int end, double radius,
             return -1;
         used++;
         /* theta = +-pi on the faces: the side of the crack decides, as for
-         * the branch functions (branch.h) */
-        int side = crack_line_side(c, x->gx[gp], x->gy[gp], NULL);
+         * the branch functions (branch.h), taken in the tip's frame */
+        int side = turn * crack_line_side(c, x->gx[gp], x->gy[gp], NULL);
         double theta = (side < 0 ? -1.0 : 1.0) * atan2(fabs(x2), x1);
         double qj[2] = {dq * x1 / r, dq * x2 / r};  /* grad q, tip frame */
 

@@ -42,8 +42,10 @@ void williams_field(int mode, double mu, double kappa, double r, double theta,
  *   I^(m) = int_A [sigma_ij u^m_i,1 + sigma^m_ij u_i,1 - sigma^m_ij eps_ij
  *           delta_1j] q_,j dA
  *
- * in the tip's frame (x1 ahead of the crack), m = I, II the auxiliary
- * Williams fields of unit K, and since I^(m) = 2 K_m / E' (Irwin's
+ * in the tip's frame (x1 ahead of the crack, x2 its left normal, at
+ * either end: a straight crack under a uniform remote stress has the same
+ * K_I and K_II at both tips), m = I, II the auxiliary Williams fields of
+ * unit K, and since I^(m) = 2 K_m / E' (Irwin's
  * J = (K_I^2 + K_II^2) / E' for the sum of the two states),
  * K_I = E' I^(I) / 2 and K_II = E' I^(II) / 2,
  * E' = E / (1 - nu^2) in plane strain, E in plane stress (run.plane).
