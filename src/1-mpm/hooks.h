@@ -37,7 +37,8 @@ typedef enum Seam {
     SEAM_PREPARE,        /**< after points and grid exist: checks, set-up */
     SEAM_TASK1_FIELDS,   /**< Task 1: key each pair's velocity field */
     SEAM_TASK2_HELD,     /**< Task 2, before a stress update (USF, USAVG):
-                              the contact the last step decided */
+                              the contact the last step decided, where it
+                              still holds */
     SEAM_TASK2_CONTACT,  /**< Task 2: adjust momenta (contact) */
     SEAM_TASK4_CONTACT,  /**< Task 4: adjust momenta after p += dt f */
     SEAM_TASK6_CONTACT,  /**< Task 6: adjust re-extrapolated momenta */

@@ -3,15 +3,14 @@
  * @brief The step's contact decision, kept per node: which pairs of fields
  *        Task 4 found in contact, and at which step. Task 6 keeps that
  *        decision; the next step's stress update (USF, USAVG) starts from
- *        it where the faces still approach. Shared by crack contact and
- *        contact between bodies.
+ *        it where the law still finds contact. Shared by crack contact
+ *        and contact between bodies.
  */
 #ifndef CONTACT_DECISION_H
 #define CONTACT_DECISION_H
 
 #include <stdio.h>
 
-#include "grid.h"
 
 /** @brief Per node: bit k of @c pairs set when the node's k-th pair of
  *         fields was in contact at Task 4 of step @c step. */
@@ -46,14 +45,6 @@ static inline int contact_decision_held(const ContactDecision *d, int node,
                                         unsigned bit, long step)
 {
     return d->step[node] == step && (d->pairs[node] & bit);
-}
-
-/** @brief Do fields @p a and @p b approach along @p n (from a to b):
- *         (v_a - v_b) . n > 0 with v = p / m? */
-static inline int contact_pair_approach(const Grid *g, int a, int b, const double n[2])
-{
-    return (g->px[a] / g->m[a] - g->px[b] / g->m[b]) * n[0] +
-           (g->py[a] / g->m[a] - g->py[b] / g->m[b]) * n[1] > 0.0;
 }
 
 /** @brief Save (@p save 1) or restore the decision, so that a restart

@@ -151,7 +151,8 @@ static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
     } else if (S->seam == SEAM_TASK2_HELD &&
                cc->law.kind != CONTACT_BONDED) {   /* the last step's */
         if (!contact_decision_held(&S->decision, S->node, bit, sim->step - 1) ||
-            !contact_pair_approach(g, a, b, n))
+            !contact_pair_detected(g, a, b, n, vnode / cc->vcell, opening, sim->dt,
+                                   &cc->law))
             return;
     } else if (!contact_pair_detected(g, a, b, n, vnode / cc->vcell, opening,
                                        sim->dt, &cc->law)) {  /* at the step's end */

@@ -340,7 +340,7 @@ int material_contact_task(Sim *sim, void *state, Seam seam)
                 } else if (seam == SEAM_TASK2_HELD &&
                            law->kind != CONTACT_BONDED) {   /* the last step's */
                     if (!contact_decision_held(&M->decision, n, bit, sim->step - 1) ||
-                        !contact_pair_approach(g, a, b, nrm))
+                        !contact_pair_detected(g, a, b, nrm, vrel, gap, sim->dt, law))
                         continue;
                 } else if (!contact_pair_detected(g, a, b, nrm, vrel, gap, sim->dt,
                                                   law)) {   /* at the step's end */
