@@ -33,10 +33,7 @@ static int reserve_rows(FieldTable *F, int rows)
         cap *= 2;
     if (grow((void **)&F->row_point, sizeof(int), F->row_cap, cap) ||
         grow((void **)&F->row_key, n * sizeof(unsigned), F->row_cap, cap) ||
-        grow((void **)&F->row_slot, n * sizeof(int), F->row_cap, cap) ||
-        (F->nx && (grow((void **)&F->row_nx, n * sizeof(double), F->row_cap, cap) ||
-                   grow((void **)&F->row_ny, n * sizeof(double), F->row_cap, cap) ||
-                   grow((void **)&F->row_tag, n * sizeof(int), F->row_cap, cap))))
+        grow((void **)&F->row_slot, n * sizeof(int), F->row_cap, cap))
         return -1;
     F->row_cap = cap;
     return 0;
@@ -52,10 +49,7 @@ static int reserve_slots(Grid *g, FieldTable *F, int extra)
         cap *= 2;
     if (grid_reserve(g, g->nnodes + cap) ||
         grow((void **)&F->next, sizeof(int), F->extra_cap, cap) ||
-        grow((void **)&F->key, sizeof(unsigned), F->extra_cap, cap) ||
-        (F->nx && (grow((void **)&F->nx, sizeof(double), F->extra_cap, cap) ||
-                   grow((void **)&F->ny, sizeof(double), F->extra_cap, cap) ||
-                   grow((void **)&F->tag, sizeof(int), F->extra_cap, cap))))
+        grow((void **)&F->key, sizeof(unsigned), F->extra_cap, cap))
         return -1;
     F->extra_cap = cap;
     return 0;
@@ -77,21 +71,6 @@ int fields_enable(Sim *sim)
     for (int p = 0; p < np; p++)
         F->row_of[p] = -1;
     return reserve_rows(F, 64) || reserve_slots(&sim->grid, F, 64) ? -1 : 0;
-}
-
-int fields_want_normals(Sim *sim)
-{
-    FieldTable *F = &sim->fields;
-    int n = STENCIL_NODES;
-    if (F->nx)
-        return 0;
-    F->nx = calloc((size_t)F->extra_cap + 1, sizeof(double));
-    F->ny = calloc((size_t)F->extra_cap + 1, sizeof(double));
-    F->row_nx = calloc((size_t)(n * F->row_cap) + 1, sizeof(double));
-    F->row_ny = calloc((size_t)(n * F->row_cap) + 1, sizeof(double));
-    F->tag = calloc((size_t)F->extra_cap + 1, sizeof(int));
-    F->row_tag = calloc((size_t)(n * F->row_cap) + 1, sizeof(int));
-    return F->nx && F->ny && F->row_nx && F->row_ny && F->tag && F->row_tag ? 0 : -1;
 }
 
 void fields_begin_step(Sim *sim)
@@ -118,29 +97,11 @@ int fields_key(Sim *sim, int p, int a, unsigned key)
         F->row_of[p] = r;
         F->row_point[r] = p;
         memset(&F->row_key[n * r], 0, (size_t)n * sizeof(unsigned));
-        if (F->row_nx) {
-            memset(&F->row_nx[n * r], 0, (size_t)n * sizeof(double));
-            memset(&F->row_ny[n * r], 0, (size_t)n * sizeof(double));
-            for (int k = 0; k < n; k++)
-                F->row_tag[n * r + k] = -1;
-        }
     }
     F->row_key[n * r + a] |= key;
     return 0;
 }
 /// [fields_key]
-
-void fields_add_normal(Sim *sim, int p, int a, double nx, double ny, int tag)
-{
-    FieldTable *F = &sim->fields;
-    int r = F->row_of[p], k = STENCIL_NODES * r + a;
-    if (!F->row_nx || r < 0)
-        return;
-    F->row_nx[k] += nx;
-    F->row_ny[k] += ny;
-    if (F->row_tag[k] < 0 || tag < F->row_tag[k])
-        F->row_tag[k] = tag;
-}
 
 /** The slot of @p key at node @p n; created (in key order) when missing. */
 static int node_slot(Sim *sim, int n, unsigned key)
@@ -161,10 +122,6 @@ static int node_slot(Sim *sim, int n, unsigned key)
     g->m[t] = g->px[t] = g->py[t] = g->fx[t] = g->fy[t] = 0.0;
     F->key[e] = key;
     F->next[e] = s;
-    if (F->nx) {
-        F->nx[e] = F->ny[e] = 0.0;
-        F->tag[e] = -1;
-    }
     if (F->first[n] < 0)
         F->touched[F->ntouched++] = n;
     if (prev < 0)
@@ -178,7 +135,6 @@ static int node_slot(Sim *sim, int n, unsigned key)
 int fields_resolve(Sim *sim)
 {
     FieldTable *F = &sim->fields;
-    Grid *g = &sim->grid;
     int n = STENCIL_NODES;
     for (int r = 0; r < F->nrows; r++) {
         int p = F->row_point[r], node[STENCIL_NODES];
@@ -189,13 +145,6 @@ int fields_resolve(Sim *sim)
             if (s < 0)
                 return step_fail(sim, p, "memory for velocity fields", node[a]);
             F->row_slot[n * r + a] = s;
-            if (F->nx && s >= g->nnodes) {
-                int e = s - g->nnodes, tag = F->row_tag[n * r + a];
-                F->nx[e] += F->row_nx[n * r + a];
-                F->ny[e] += F->row_ny[n * r + a];
-                if (tag >= 0 && (F->tag[e] < 0 || tag < F->tag[e]))
-                    F->tag[e] = tag;
-            }
         }
     }
     return 0;
@@ -226,11 +175,5 @@ void fields_free(FieldTable *F)
     free(F->row_point);
     free(F->row_key);
     free(F->row_slot);
-    free(F->row_nx);
-    free(F->row_ny);
-    free(F->nx);
-    free(F->ny);
-    free(F->tag);
-    free(F->row_tag);
     memset(F, 0, sizeof *F);
 }

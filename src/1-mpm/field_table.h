@@ -27,30 +27,20 @@ typedef struct FieldTable {
     int *first;        /**< per node: first extra slot, -1; NULL: no table */
     int *next;         /**< per extra slot: next of the same node, or -1 */
     unsigned *key;     /**< per extra slot: its key */
-    int extra_cap;     /**< room of next, key, nx, ny */
+    int extra_cap;     /**< room of next, key */
     int *touched;      /**< nodes given extra slots this step */
     int ntouched;      /**< how many */
     int *row_of;       /**< per point: its pair row, or -1 */
     int *row_point;    /**< per row: the point */
     unsigned *row_key; /**< 4 per row: key of each pair */
     int *row_slot;     /**< 4 per row: slot of each pair (after Task 1) */
-    double *row_nx;    /**< 4 per row: crack normal sum x (when asked) */
-    double *row_ny;    /**< 4 per row: crack normal sum y (when asked) */
-    int *row_tag;      /**< 4 per row: lowest tag of its normals (when asked) */
     int nrows;         /**< rows in use this step */
     int row_cap;       /**< rows allocated */
-    double *nx;        /**< per extra slot: normal sum x (when asked) */
-    double *ny;        /**< per extra slot: normal sum y (when asked) */
-    int *tag;          /**< per extra slot: lowest tag of its normals, or -1 */
 } FieldTable;
 /// [field_table]
 
 /** @brief Give the scene a field table (idempotent). @return 0 or -1. */
 int fields_enable(struct Sim *sim);
-
-/** @brief Accumulate crack normals (and the tag of the crack that gave
- *         them) per pair and per slot (section 2.2). @return 0 or -1. */
-int fields_want_normals(struct Sim *sim);
 
 /** @brief Task 1 begins: forget the last step's rows and extra slots. */
 void fields_begin_step(struct Sim *sim);
@@ -61,15 +51,9 @@ void fields_begin_step(struct Sim *sim);
  */
 int fields_key(struct Sim *sim, int p, int a, unsigned key);
 
-/** @brief Add a normal (@p nx, @p ny) to pair (@p p, @p a) (when asked),
- *         with the @p tag of what gave it (a crack's index, >= 0); a pair
- *         and a slot keep the lowest tag they were given. */
-void fields_add_normal(struct Sim *sim, int p, int a, double nx, double ny,
-                       int tag);
-
 /**
  * @brief Task 1 ends: give every keyed pair the slot of its key at its
- *        node, creating slots as needed (and their normals).
+ *        node, creating slots as needed.
  * @return 0, or -1 when memory is exhausted (Sim::fail filled).
  */
 int fields_resolve(struct Sim *sim);

@@ -3,8 +3,6 @@
  * @brief Task 1 with cracks: the crack side of every particle-node pair
  *        that crosses a crack, as stage 2's part of the field key (eq. 2).
  */
-#include <math.h>
-
 #include "cracks.h"
 #include "step.h"
 
@@ -31,13 +29,8 @@ int cracks_key_fields(Sim *sim, void *state, Seam seam)
                 continue;                    /* field 0: nothing to key */
             if (fields_key(sim, p, a, (unsigned)f << C->side_shift))
                 return -1;
-            if (C->normals) {                /* section 2.2: above to below */
-                const Crack *c = &C->crack[hit.crack];
-                double dx = c->x[hit.segment + 1] - c->x[hit.segment];
-                double dy = c->y[hit.segment + 1] - c->y[hit.segment];
-                double len = sqrt(dx * dx + dy * dy);
-                fields_add_normal(sim, p, a, dy / len, -dx / len, hit.crack);
-            }
+            if (C->crossed && C->crossed(sim, C, p, a, &hit))
+                return -1;                   /* a later stage's subscriber */
         }
     }
     return 0;

@@ -69,7 +69,14 @@ typedef struct Cracks {
     int ncracks;                  /**< number of cracks */
     Crack *crack;                 /**< the cracks */
     int side_shift;               /**< where the side sits in the field key */
-    int normals;                  /**< Task 1 adds crack normals per pair */
+    /** A later stage's subscriber to the crossings of Task 1 (chapter 4's
+     *  crack normals; NULL: none): called for every pair (point @p p,
+     *  corner @p a) that Task 1 keys across a crack, after fields_key(),
+     *  with the crossing that decided its field. @return 0, or -1 to stop
+     *  the run (Sim::fail filled). */
+    int (*crossed)(Sim *sim, const struct Cracks *C, int p, int a,
+                   const CrackHit *hit);
+    void *crossed_state;          /**< the subscriber's own state */
     const CrossingSearch *search; /**< the scene's crossing search */
     void *search_state;           /**< the search's own data */
     /** Per grid cell (numbered by its lower-left node): negative when no

@@ -19,10 +19,11 @@ int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     ContactState *S = state;
     Cracks *C = cracks_of(sim);
     const Scene *sc = &sim->scene;
-    C->normals = 1;                          /* Task 1 adds crack normals */
+    C->crossed = crack_normals_crossed;      /* Task 1 hands each crossing */
+    C->crossed_state = &S->normals;
     S->vnode = calloc((size_t)sim->grid.nnodes, sizeof(double));
     S->volumes_step = -1;
-    if (fields_want_normals(sim) || !S->vnode ||
+    if (crack_normals_alloc(&S->normals, sim) || !S->vnode ||
         contact_decision_alloc(&S->decision, sim->grid.nnodes)) {
         snprintf(err, errlen, "%s: out of memory for crack contact", sc->file);
         return -1;
@@ -55,14 +56,14 @@ int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     return 0;
 }
 
-/** The unit normal of extra slot @p s (the sum of its pairs' normals,
+/** The normal of extra slot @p s (the sum of its pairs' unit normals,
  *  above to below) added to (nx, ny). */
-static void add_slot_normal(const Sim *sim, int s, double *nx, double *ny)
+static void add_slot_normal(const Sim *sim, const ContactState *S, int s,
+                            double *nx, double *ny)
 {
-    const FieldTable *F = &sim->fields;
     int e = s - sim->grid.nnodes;
-    *nx += F->nx[e];
-    *ny += F->ny[e];
+    *nx += S->normals.nx[e];
+    *ny += S->normals.ny[e];
 }
 
 /** Room for the per-slot displacement sums (grown with the grid's slots). */
@@ -173,13 +174,13 @@ static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
 static void crack_contact_fields(Sim *sim, ContactState *S, const int f[3],
                                  double vnode, int *adjusted)
 {
-    const FieldTable *F = &sim->fields;
+    const int *tag = S->normals.tag;
     int nn = sim->grid.nnodes;
     if (f[0] < 0 && f[1] >= 0 && f[2] >= 0) {     /* both sides crossed */
         double nx = 0, ny = 0;
-        add_slot_normal(sim, f[1], &nx, &ny);
-        add_slot_normal(sim, f[2], &nx, &ny);
-        int t1 = F->tag[f[1] - nn], t2 = F->tag[f[2] - nn];
+        add_slot_normal(sim, S, f[1], &nx, &ny);
+        add_slot_normal(sim, S, f[2], &nx, &ny);
+        int t1 = tag[f[1] - nn], t2 = tag[f[2] - nn];
         contact_pair(sim, S, f[1], f[2], nx, ny, t1 < t2 ? t1 : t2, vnode,
                      adjusted);
         return;
@@ -188,12 +189,12 @@ static void crack_contact_fields(Sim *sim, ContactState *S, const int f[3],
         if (f[0] < 0 || f[side] < 0)
             continue;
         double nx = 0, ny = 0;
-        add_slot_normal(sim, f[side], &nx, &ny);
-        int tag = F->tag[f[side] - nn];
+        add_slot_normal(sim, S, f[side], &nx, &ny);
+        int t = tag[f[side] - nn];
         if (side == 1)                   /* above the crack: field 1 */
-            contact_pair(sim, S, f[1], f[0], nx, ny, tag, vnode, adjusted);
+            contact_pair(sim, S, f[1], f[0], nx, ny, t, vnode, adjusted);
         else                             /* the node's side is above */
-            contact_pair(sim, S, f[0], f[2], nx, ny, tag, vnode, adjusted);
+            contact_pair(sim, S, f[0], f[2], nx, ny, t, vnode, adjusted);
     }
 }
 
@@ -206,7 +207,7 @@ int crack_contact_task(Sim *sim, void *state, Seam seam)
     const Cracks *C = cracks_of(sim);
     unsigned side_mask = 3u << C->side_shift;
     if (S->volumes_step != sim->step) {      /* the step's first contact */
-        if (node_volumes(sim, S))
+        if (crack_normals_sum(sim, &S->normals) || node_volumes(sim, S))
             return -1;
         S->volumes_step = sim->step;
     }

@@ -9,6 +9,7 @@
 
 #include "contact_decision.h"
 #include "contact_settings.h"
+#include "crack_normals.h"
 #include "cracks.h"
 
 /// [crack_contact_settings]
@@ -25,6 +26,7 @@ typedef struct CrackContact {
 typedef struct ContactState {
     int ncracks;          /**< entries of crack */
     CrackContact *crack;  /**< per crack */
+    CrackNormals normals; /**< the crack's normal per extra slot (Task 1) */
     double *vnode;        /**< per node: volume V_i (eq. 8), at touched nodes */
     int opening;          /**< a crack detects by its opening: x0, y0, ux,
                                uy are kept */
@@ -35,7 +37,8 @@ typedef struct ContactState {
     double *uy;           /**< per slot: the same, y */
     int cap;              /**< slots of ux, uy */
     ContactDecision decision; /**< the pairs in contact at Task 4 */
-    long volumes_step;    /**< the step whose node volumes are found (-1: none) */
+    long volumes_step;    /**< the step whose normals and node volumes are
+                               found (-1: none) */
     Seam seam;            /**< the task being done */
     int node;             /**< the node being visited */
     int pair;             /**< pairs of fields met at that node so far */
@@ -51,8 +54,8 @@ extern const char *const crack_contact_keys[];
 int crack_contact_read(Sim *sim, const config_setting_t *s, int index,
                        struct SceneReader *r);
 
-/** @brief Ask for crack normals; room for nodal volumes; cell volumes
- *         per crack. */
+/** @brief Subscribe the crack normals to stage 2's crossings; room for
+ *         them and for nodal volumes; cell volumes per crack. */
 int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen);
 
 /**

@@ -67,6 +67,7 @@ void crack_contact_release(void *state)
 {
     ContactState *S = state;
     free(S->crack);
+    crack_normals_free(&S->normals);
     free(S->vnode);
     free(S->x0);
     free(S->y0);

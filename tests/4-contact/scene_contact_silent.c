@@ -6,8 +6,9 @@
  *        crack reaches, gives stage 3's output byte for byte, with every
  *        update scheme; only history.csv's two new columns are added.
  *
- * Every part of stage 4 runs in that scene (normals and nodal volumes in
- * Task 1, the node loop at Tasks 2, 4 and 6), so any change it made to a
+ * Every part of stage 4 runs in that scene (normals from Task 1's
+ * crossings, their sums and the nodal volumes at the step's first contact,
+ * the node loop at Tasks 2, 4 and 6), so any change it made to a
  * node it does not adjust, or to the order of a sum, would show here.
  */
 #include "testkit.h"
