@@ -46,7 +46,8 @@ typedef struct JState {
     JSettings *set;               /**< per crack (on = 0 without the key) */
     int ntips;                    /**< tips evaluated */
     JTip *tip;                    /**< the tips */
-    long every;                   /**< the smallest every of the cracks */
+    long every;                   /**< the smallest every of the cracks:
+                                       every tip is evaluated then */
     long at_step;                 /**< step of the latest evaluation */
     double at_time;               /**< its time */
     int npoints;                  /**< points of X, Y */
@@ -102,8 +103,8 @@ void j_integral_tips(const Sim *sim, JState *S);
  *         JState::every steps and at the last step. */
 int j_integral_task7(Sim *sim, void *state, Seam seam);
 
-/** @brief history.csv: J_crack<k>_<first|last>_c<contour> per tip and
- *         contour, the latest evaluation. */
+/** @brief history.csv: a column per tip and contour, the latest
+ *         evaluation (J_crack0_last_c4: crack 0's last point, 4 cells). */
 int j_integral_history(const Sim *sim, void *state, FILE *f, int header);
 
 /** @brief The end of a run: J per tip and contour, and its spread. */
