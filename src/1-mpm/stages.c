@@ -27,6 +27,9 @@
 #if MPM_STAGE >= 6
 #include "stage6.h"
 #endif
+#if MPM_STAGE >= 7
+#include "stage7.h"
+#endif
 
 /// [install_stages]
 void mpm_install_stages(Hooks *h)
@@ -68,6 +71,12 @@ void mpm_install_stages(Hooks *h)
     stage6_install(h);
 #else
     hooks_add_refusal(h, "run.method", "xefg", "stage 6 (the XEFG meshfree method)");
+#endif
+    hooks_begin_stage(h, 7);
+#if MPM_STAGE >= 7
+    stage7_install(h);
+#else
+    hooks_add_refusal(h, "cracks.j_integral", NULL, "stage 7 (fracture parameters)");
 #endif
     hooks_begin_stage(h, 99);    /* a test's plug-in comes after every stage */
 }

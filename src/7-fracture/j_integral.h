@@ -1,0 +1,119 @@
+/**
+ * @file j_integral.h
+ * @brief The J-integral at the tips of CRAMP cracks (chapter 7): a crack's
+ *        `j_integral` settings, the tips it has, and the dynamic J of each
+ *        tip on square domains of a few cells (Guo and Nairn, CMES 6
+ *        (2004), the domain form of their eq. 1).
+ */
+#ifndef MPM_J_INTEGRAL_H
+#define MPM_J_INTEGRAL_H
+
+#include <libconfig.h>
+
+#include "sim.h"
+
+struct SceneReader;
+
+/** Most contours of one crack's j_integral. */
+#define J_CONTOURS_MAX 8
+
+/** One crack's `j_integral` settings, as the scene gave them. */
+typedef struct JSettings {
+    int on;                       /**< the crack has the key */
+    long every;                   /**< steps between evaluations */
+    int ncontours;                /**< how many contours */
+    int contour[J_CONTOURS_MAX];  /**< half-widths of the domains, in cells */
+    int line;                     /**< line of the key (scene_lines_at()) */
+    int contours_line;            /**< line of its contours */
+} JSettings;
+
+/** One tip that J is evaluated at: a crack's end that lies in a body. */
+typedef struct JTip {
+    int crack;                    /**< stage 2's crack index */
+    int end;                      /**< 0: its first point, 1: its last */
+    double x;                     /**< the tip now */
+    double y;                     /**< the tip now */
+    double ex;                    /**< unit vector ahead of the tip (x1) */
+    double ey;                    /**< its y */
+    double J[J_CONTOURS_MAX];     /**< the latest J per contour (N/mm) */
+} JTip;
+
+/// [j_state]
+/** Stage 7's state: the settings per crack, the tips, the points' first
+ *  positions (their displacement u = x - X) and scratch per field slot. */
+typedef struct JState {
+    int ncracks;                  /**< entries of set */
+    JSettings *set;               /**< per crack (on = 0 without the key) */
+    int ntips;                    /**< tips evaluated */
+    JTip *tip;                    /**< the tips */
+    long every;                   /**< the smallest every of the cracks:
+                                       every tip is evaluated then */
+    long at_step;                 /**< step of the latest evaluation */
+    double at_time;               /**< its time */
+    int npoints;                  /**< points of X, Y */
+    double *X;                    /**< first position x of each point */
+    double *Y;                    /**< first position y */
+    int cap;                      /**< slots of the scratch below */
+    double *mux;                  /**< per slot: sum m S u_x */
+    double *muy;                  /**< per slot: sum m S u_y */
+    double *m;                    /**< per slot: sum m S */
+} JState;
+/// [j_state]
+
+/** The keys of a crack's j_integral group (NULL-ended). */
+extern const char *const j_integral_keys[];
+
+/** @brief Read `cracks.[index].j_integral` and, for the first crack that
+ *         has it, subscribe stage 7's hooks (set-up, Task 7, history,
+ *         report, checkpoint). @return 0, or -1 with the message in @p r. */
+int j_integral_read(Sim *sim, const config_setting_t *s, int index,
+                    struct SceneReader *r);
+
+/** @brief Set-up: find the tips, check that every contour lies in the
+ *         grid, keep the first positions, allocate the scratch.
+ *  @return 0, or -1 with "file:line: ..." in @p err. */
+int j_integral_prepare(Sim *sim, void *state, char *err, size_t errlen);
+
+/**
+ * @brief J at every tip and contour, now, into JTip::J (N/mm, that is
+ *        mJ/mm^2): the domain integral over the square of half-width c
+ *        cells about the tip, with the weight q falling from 1 to 0
+ *        across its outermost ring of cells,
+ *
+ *   J = sum_p A_p [ (sigma_ij u_i,1 - (W + T) delta_1j) q_,j
+ *                   + rho ((a_i + kappa v_i) u_i,1 - v_i v_i,1) q ]
+ *
+ * in the tip's frame (x1 ahead), from the points' stresses, strains,
+ * velocities and areas A_p = V_p / thickness, and the gradients of the
+ * displacement and velocity the grid gives each point through its own
+ * velocity fields (so each side of the crack sees its own nodes).
+ * @return 0; -1 when out of memory for a grid that grew.
+ */
+int j_integral_evaluate(const Sim *sim, JState *S);
+
+/** @brief Make the scratch hold @p slots field slots (never shrinks).
+ *  @return 0, or -1 when out of memory. */
+int j_integral_fit(JState *S, int slots);
+
+/** @brief Bring each tip's point and direction up to date with the
+ *         cracks (stage 2 moves them at Task 7). */
+void j_integral_tips(const Sim *sim, JState *S);
+
+/** @brief Task 7: move the tips with the cracks, evaluate J every
+ *         JState::every steps and at the last step. */
+int j_integral_task7(Sim *sim, void *state, Seam seam);
+
+/** @brief history.csv: a column per tip and contour, the latest
+ *         evaluation (J_crack0_last_c4: crack 0's last point, 4 cells). */
+int j_integral_history(const Sim *sim, void *state, FILE *f, int header);
+
+/** @brief The end of a run: J per tip and contour, and its spread. */
+int j_integral_report(const Sim *sim, void *state, FILE *f);
+
+/** @brief Save or restore the first positions and the latest J. */
+int j_integral_checkpoint(Sim *sim, void *state, FILE *f, int save);
+
+/** @brief Release stage 7's state. */
+void j_integral_release(void *state);
+
+#endif

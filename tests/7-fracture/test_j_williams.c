@@ -1,0 +1,91 @@
+/**
+ * @file test_j_williams.c
+ * @brief The domain integral of chapter 7 on an exact field: the points of
+ *        a cracked block carry the Williams mode-I field of K = 1 (stage
+ *        6's williams_field(): displacement, strain, stress), so that J
+ *        must be K^2 / E' (Irwin) on every contour, whatever the MPM
+ *        solution would have been. The displacement gradients still come
+ *        through the grid, each side of the crack from its own field
+ *        (Task 1 of one step at rest gives the slots).
+ *
+ * Bounds, fixed before the first run: J within 2 % of K^2 / E' on the
+ * domains of 2 to 6 cells, and within 1 % of each other.
+ */
+#include "testkit.h"
+
+#include <stdio.h>
+
+#include "interaction_integral.h"
+#include "j_integral.h"
+
+#define PI 3.14159265358979323846
+
+/** A 20 x 20 mm block, cells of 1 mm, an edge crack along y = 10 to the
+ *  tip at x = 10.5 (mid-cell), plane strain. */
+static const char scene[] =
+    "grid = { origin = [0.0, 0.0]; cells = [20, 20]; cell_size = [1.0, 1.0]; };\n"
+    "run = { time = 0.01; snapshots = 0; plane = \"strain\"; };\n"
+    "materials = ( { name = \"m\"; E = 1.0; nu = 0.3; rho = 1.0e-3; } );\n"
+    "bodies = ( { name = \"b\"; material = \"m\"; points_per_cell = 2;\n"
+    "             rectangle = { min = [1.0, 1.0]; max = [19.0, 19.0]; }; } );\n"
+    "cracks = ( { points = ( [0.5, 10.0], [10.5, 10.0] );\n"
+    "             j_integral = { every = 1; contours = [2, 3, 4, 5, 6]; }; } );\n";
+
+/** Put the Williams field of K = @p K about (xt, yt) on the points, from
+ *  their positions now (X, as stage 7 keeps them). */
+static void impose_williams(Sim *sim, double K, double xt, double yt)
+{
+    const Material *m = &sim->scene.mat[0];
+    double mu = m->E / (2 * (1 + m->nu)), kappa = 3 - 4 * m->nu;
+    Particles *P = &sim->pts;
+    for (int p = 0; p < P->n; p++) {
+        double dx = P->x[p] - xt, dy = P->y[p] - yt, s[3], u[2], du[4];
+        williams_field(1, mu, kappa, hypot(dx, dy), atan2(dy, dx), s, u, du);
+        P->x[p] += K * u[0];
+        P->y[p] += K * u[1];
+        P->sxx[p] = K * s[0];
+        P->syy[p] = K * s[1];
+        P->sxy[p] = K * s[2];
+        P->exx[p] = K * du[0];
+        P->eyy[p] = K * du[3];
+        P->exy[p] = 0.5 * K * (du[1] + du[2]);
+    }
+}
+
+static void j_of_the_williams_field_is_irwins(void **state)
+{
+    (void)state;
+    Sim *sim = tk_load(scene);
+    tk_steps(sim, 1);                    /* at rest: Task 0 and 1's slots */
+    JState *S = sim_state(sim, "j-integral");
+    assert_non_null(S);
+    assert_int_equal(S->ntips, 1);
+    const double K = 1e-3;               /* MPa sqrt(mm): small displacements */
+    impose_williams(sim, K, 10.5, 10.0);
+    assert_int_equal(j_integral_evaluate(sim, S), 0);
+    const Material *m = &sim->scene.mat[0];
+    double Jx = K * K * (1 - m->nu * m->nu) / m->E;   /* plane strain */
+    const JTip *T = &S->tip[0];
+    const JSettings *j = &S->set[0];
+    double lo = T->J[0], hi = T->J[0];
+    printf("  Williams mode I, K = %g, J = K^2/E' = %.6g (cells 1 mm, tip mid-cell):\n",
+           K, Jx);
+    for (int c = 0; c < j->ncontours; c++) {
+        printf("    %d cells: J = %.6g (%+.3f %%)\n", j->contour[c], T->J[c],
+               100 * (T->J[c] / Jx - 1));
+        lo = fmin(lo, T->J[c]);
+        hi = fmax(hi, T->J[c]);
+    }
+    for (int c = 0; c < j->ncontours; c++)
+        assert_close(T->J[c], Jx, 0.02 * Jx);
+    assert_true(hi - lo <= 0.01 * 0.5 * (hi + lo));
+    tk_free(sim);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(j_of_the_williams_field_is_irwins),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
