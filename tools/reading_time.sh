@@ -14,8 +14,9 @@
 # What counts:
 #   - code lines are the lines of code the page shows:
 #       \snippet FILE TAG     the lines between the two "/// [TAG]" markers
-#                             of FILE, found in src/, chapters/ or tests/
-#                             (Doxyfile's EXAMPLE_PATH);
+#                             of FILE, found in src/, chapters/, tests/ or
+#                             build/figures/ (Doxyfile's EXAMPLE_PATH; a
+#                             figure's table is there once it is drawn);
 #       \verbinclude FILE     (and \include) every line of FILE;
 #       \verbatim ... \endverbatim, \code ... \endcode, ``` or ~~~ fences;
 #       an indented code block: a line indented 4 or more spaces beyond the
@@ -64,7 +65,7 @@ push @order, grep { !$seen{$_}++ } @files;
 
 sub find_example {
     my $p = shift;
-    for my $d ("src", "chapters", "tests") { return "$d/$p" if -f "$d/$p" }
+    for my $d ("src", "chapters", "tests", "build/figures") { return "$d/$p" if -f "$d/$p" }
     return undef;
 }
 sub snippet_lines {
