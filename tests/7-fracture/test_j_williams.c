@@ -17,6 +17,8 @@
  * at its first point (whose tip frame points back along the crack: x1 =
  * -x, x2 = -y here). Bounds, fixed before the first run: the field's own
  * K within 2 % of K on every domain, the other mode's within 1 % of K.
+ * A last case adds a T-stress or a rigid rotation, which carry no K, and
+ * prints what they move K by (not bounded).
  */
 #include "testkit.h"
 
@@ -139,6 +141,54 @@ static void k_of_williams_mode_ii_first(void **state)
     k_of_a_williams_field(scene_first, 2, 1, 9.5);
 }
 
+/** Add to the points a uniform stress sigma_11 = @p T (the T-stress,
+ *  plane strain: eps_11 = (1 - nu^2) T / E, eps_22 = -nu (1 + nu) T / E)
+ *  and a rigid rotation @p omega about (xt, yt), each with its
+ *  displacement from the points' first positions @p X, @p Y. Neither
+ *  carries any K: the exact interaction integral of either with Williams'
+ *  fields is 0. */
+static void add_regular(Sim *sim, const double *X, const double *Y, double T,
+                        double omega, double xt, double yt)
+{
+    const Material *m = &sim->scene.mat[0];
+    double e1 = (1 - m->nu * m->nu) * T / m->E, e2 = -m->nu * (1 + m->nu) * T / m->E;
+    Particles *P = &sim->pts;
+    for (int p = 0; p < P->n; p++) {
+        double dx = X[p] - xt, dy = Y[p] - yt;
+        P->x[p] += e1 * dx - omega * dy;
+        P->y[p] += e2 * dy + omega * dx;
+        P->sxx[p] += T;
+        P->exx[p] += e1;
+        P->eyy[p] += e2;
+    }
+}
+
+/** What the regular terms of a real field do to K on this quadrature:
+ *  printed, not bounded (found after the edge crack, scene_k_edge.c, came
+ *  out high; see chapter 7, "From J to K"). */
+static void k_with_regular_terms(void **state)
+{
+    (void)state;
+    const double K = 1e-3, T[2] = {1e-3, 0.0}, omega[2] = {0.0, 1e-4};
+    for (int c = 0; c < 2; c++) {
+        Sim *sim = tk_load(scene);
+        tk_steps(sim, 1);
+        JState *S = sim_state(sim, "j-integral");
+        assert_non_null(S);
+        impose_williams(sim, K, 10.5, 10.0);
+        add_regular(sim, S->X, S->Y, T[c], omega[c], 10.5, 10.0);
+        assert_int_equal(j_integral_evaluate(sim, S), 0);
+        const JTip *Tp = &S->tip[0];
+        printf("  Williams mode I, K = %g, plus T = %g MPa and a rigid rotation "
+               "%g (printed, not bounded):\n", K, T[c], omega[c]);
+        for (int k = 0; k < S->set[0].ncontours; k++)
+            printf("    %d cells: K_I %+.3f %%, K_II %+.3f %% of K\n",
+                   S->set[0].contour[k], 100 * (Tp->KI[k] / K - 1),
+                   100 * Tp->KII[k] / K);
+        tk_free(sim);
+    }
+}
+
 static void j_of_the_williams_field_is_irwins(void **state)
 {
     (void)state;
@@ -177,6 +227,7 @@ int main(void)
         cmocka_unit_test(k_of_williams_mode_ii_last),
         cmocka_unit_test(k_of_williams_mode_i_first),
         cmocka_unit_test(k_of_williams_mode_ii_first),
+        cmocka_unit_test(k_with_regular_terms),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
