@@ -157,6 +157,17 @@ static double weight(const Grid *g, const JTip *T, int c, double x, double y,
 }
 /// [j_weight]
 
+/** The material of the body that tip @p T lies in (the first such body;
+ *  material 0 if none). */
+static int tip_material(const Sim *sim, const JTip *T)
+{
+    const Scene *sc = &sim->scene;
+    for (int b = 0; b < sc->nbodies; b++)
+        if (shape_contains(&sc->bodies[b].shape, T->x, T->y))
+            return sc->bodies[b].material;
+    return 0;
+}
+
 /// [j_integral_evaluate]
 int j_integral_evaluate(const Sim *sim, JState *S)
 {
@@ -168,8 +179,12 @@ int j_integral_evaluate(const Sim *sim, JState *S)
     j_integral_tips(sim, S);
     nodal_displacement(sim, S);
     double kappa = sc->run.damping;
-    for (int t = 0; t < S->ntips; t++)
+    int strain = sc->run.plane == PLANE_STRAIN;
+    for (int t = 0; t < S->ntips; t++) {
         memset(S->tip[t].J, 0, sizeof S->tip[t].J);
+        memset(S->tip[t].KI, 0, sizeof S->tip[t].KI);   /* M^(I) until the end */
+        memset(S->tip[t].KII, 0, sizeof S->tip[t].KII);
+    }
     for (int p = 0; p < P->n; p++) {
         int gradients = 0;
         JPoint jp;
@@ -199,6 +214,21 @@ int j_integral_evaluate(const Sim *sim, JState *S)
                eq. 4 being a body force; rho v_i v_i,1 = T,1 */
             double inertia = (jp.a[0] + kappa * v[0]) * d[0] +
                              (jp.a[1] + kappa * v[1]) * d[1] - ve;
+            /* the auxiliary states (mode I, II) and what of them does not
+               depend on the contour: u^m_i,1, sigma_ij eps^m_ij and the
+               inertia (a_i + kappa v_i) u^m_i,1 */
+            double sa[2][2][2], dua[2][2][2], da[2][2], W12[2], ina[2];
+            k_auxiliary(T, &sc->mat[P->mat[p]], strain, P->x[p], P->y[p],
+                        sa, dua);
+            for (int k = 0; k < 2; k++) {
+                W12[k] = ina[k] = 0.0;
+                for (int i = 0; i < 2; i++) {
+                    da[k][i] = dua[k][i][0] * e[0] + dua[k][i][1] * e[1];
+                    ina[k] += (jp.a[i] + kappa * v[i]) * da[k][i];
+                    for (int l = 0; l < 2; l++)  /* eps^m = sym(du^m) */
+                        W12[k] += s[i][l] * 0.5 * (dua[k][i][l] + dua[k][l][i]);
+                }
+            }
             for (int m = 0; m < j->ncontours; m++) {
                 double dq[2];
                 double q = weight(g, T, j->contour[m], P->x[p], P->y[p], dq);
@@ -209,7 +239,28 @@ int j_integral_evaluate(const Sim *sim, JState *S)
                     sdq += d[i] * (s[i][0] * dq[0] + s[i][1] * dq[1]);
                 double edq = e[0] * dq[0] + e[1] * dq[1];  /* delta_1j q_,j */
                 T->J[m] += A * (sdq - W * edq) - mA * T2 * edq + mA * inertia * q;
+                double M[2];             /* the interaction integrals */
+                for (int k = 0; k < 2; k++) {
+                    double sum = -W12[k] * edq;
+                    for (int i = 0; i < 2; i++)
+                        sum += da[k][i] * (s[i][0] * dq[0] + s[i][1] * dq[1]) +
+                             d[i] * (sa[k][i][0] * dq[0] + sa[k][i][1] * dq[1]);
+                    M[k] = A * sum + mA * ina[k] * q;
+                }
+                T->KI[m] += M[0];
+                T->KII[m] += M[1];
             }
+        }
+    }
+    /* K_m = E' M^(m) / 2 (Irwin: M^(m) = 2 K_m / E'), E' of the material
+       at the tip (the body the tip lies in; one material about it) */
+    for (int t = 0; t < S->ntips; t++) {
+        JTip *T = &S->tip[t];
+        const Material *mt = &sc->mat[tip_material(sim, T)];
+        double Ep = strain ? mt->E / (1.0 - mt->nu * mt->nu) : mt->E;
+        for (int m = 0; m < S->set[T->crack].ncontours; m++) {
+            T->KI[m] *= 0.5 * Ep;
+            T->KII[m] *= 0.5 * Ep;
         }
     }
     return 0;

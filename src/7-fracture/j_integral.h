@@ -36,6 +36,8 @@ typedef struct JTip {
     double ex;                    /**< unit vector ahead of the tip (x1) */
     double ey;                    /**< its y */
     double J[J_CONTOURS_MAX];     /**< the latest J per contour (N/mm) */
+    double KI[J_CONTOURS_MAX];    /**< the latest K_I per contour (MPa mm^1/2) */
+    double KII[J_CONTOURS_MAX];   /**< the latest K_II per contour */
 } JTip;
 
 /// [j_state]
@@ -87,9 +89,35 @@ int j_integral_prepare(Sim *sim, void *state, char *err, size_t errlen);
  * velocities and areas A_p = V_p / thickness, and the gradients of the
  * displacement and velocity the grid gives each point through its own
  * velocity fields (so each side of the crack sees its own nodes).
+ *
+ * K_I and K_II (JTip::KI, JTip::KII) on the same domains and weights, by
+ * the interaction integral with Williams' fields of unit K as auxiliary
+ * states (stage 6's williams_field(), in the tip's frame: x1 ahead, x2
+ * its left normal),
+ *
+ *   M^(m) = sum_p A_p [ (sigma_ij u^m_i,1 + sigma^m_ij u_i,1
+ *                        - sigma_ij eps^m_ij delta_1j) q_,j
+ *                       + rho (a_i + kappa v_i) u^m_i,1 q ],
+ *
+ * K_I = E' M^(I) / 2, K_II = E' M^(II) / 2 (E' = E in plane stress,
+ * E / (1 - nu^2) in plane strain; Yau, Chen and Shih 1980), with E and nu
+ * of each point's material (a linear elastic body about the tip).
  * @return 0; -1 when out of memory for a grid that grew.
  */
 int j_integral_evaluate(const Sim *sim, JState *S);
+
+/**
+ * @brief The auxiliary states of the interaction integral at (@p x, @p y)
+ *        about tip @p T: Williams' near-tip fields of K_I = 1 (mode 0) and
+ *        K_II = 1 (mode 1) MPa mm^1/2 of material @p m (stage 6's
+ *        williams_field(), Anderson, Fracture Mechanics, ch. 2), built in
+ *        the tip's frame (x1 ahead, x2 its left normal) and given in global
+ *        axes: stress s[mode][i][j] and displacement gradient
+ *        du[mode][i][j] = d u_i / d x_j.
+ * @param plane_strain 1 for plane strain, 0 for plane stress
+ */
+void k_auxiliary(const JTip *T, const Material *m, int plane_strain,
+                 double x, double y, double s[2][2][2], double du[2][2][2]);
 
 /** @brief Make the scratch hold @p slots field slots (never shrinks).
  *  @return 0, or -1 when out of memory. */
@@ -103,11 +131,13 @@ void j_integral_tips(const Sim *sim, JState *S);
  *         JState::every steps and at the last step. */
 int j_integral_task7(Sim *sim, void *state, Seam seam);
 
-/** @brief history.csv: a column per tip and contour, the latest
- *         evaluation (J_crack0_last_c4: crack 0's last point, 4 cells). */
+/** @brief history.csv: columns per tip and contour, the latest
+ *         evaluation: J_crack0_last_c4 (crack 0's last point, 4 cells),
+ *         then KI_crack0_last_c4 and KII_crack0_last_c4. */
 int j_integral_history(const Sim *sim, void *state, FILE *f, int header);
 
-/** @brief The end of a run: J per tip and contour, and its spread. */
+/** @brief The end of a run: J, K_I and K_II per tip and contour, and
+ *         the spread of J. */
 int j_integral_report(const Sim *sim, void *state, FILE *f);
 
 /** @brief Save or restore the first positions and the latest J. */

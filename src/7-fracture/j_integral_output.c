@@ -36,13 +36,17 @@ int j_integral_history(const Sim *sim, void *state, FILE *f, int header)
     for (int t = 0; t < S->ntips; t++) {
         const JTip *T = &S->tip[t];
         const JSettings *j = &S->set[T->crack];
-        for (int m = 0; m < j->ncontours; m++) {
-            int rc = header ? fprintf(f, ",J_crack%d_%s_c%d", T->crack,
-                                      T->end ? "last" : "first", j->contour[m])
-                            : fprintf(f, ",%.9g", T->J[m]);
-            if (rc < 0)
-                return -1;
-        }
+        const char *name[3] = {"J", "KI", "KII"};
+        const double *val[3] = {T->J, T->KI, T->KII};
+        for (int k = 0; k < 3; k++)
+            for (int m = 0; m < j->ncontours; m++) {
+                int rc = header ? fprintf(f, ",%s_crack%d_%s_c%d", name[k],
+                                          T->crack, T->end ? "last" : "first",
+                                          j->contour[m])
+                                : fprintf(f, ",%.9g", val[k][m]);
+                if (rc < 0)
+                    return -1;
+            }
     }
     return 0;
 }
@@ -70,6 +74,15 @@ int j_integral_report(const Sim *sim, void *state, FILE *f)
         if (fprintf(f, " %s/%s^2; spread %.3g %%\n", u->energy, u->length,
                     mid != 0.0 ? 100.0 * (hi - lo) / fabs(mid) : 0.0) < 0)
             return -1;
+        if (fprintf(f, "mpm: K_I, K_II (interaction integral), crack %d, %s "
+                    "point:", T->crack, T->end ? "last" : "first") < 0)
+            return -1;
+        for (int m = 0; m < j->ncontours; m++)
+            if (fprintf(f, " %d cells %.6g, %.6g%s", j->contour[m], T->KI[m],
+                        T->KII[m], m + 1 < j->ncontours ? ";" : "") < 0)
+                return -1;
+        if (fprintf(f, " %s %s^1/2\n", u->stress, u->length) < 0)
+            return -1;
     }
     return 0;
 }
@@ -86,7 +99,9 @@ int j_integral_checkpoint(Sim *sim, void *state, FILE *f, int save)
         checkpoint_io(f, &S->at_time, sizeof S->at_time, save))
         return -1;
     for (int t = 0; t < S->ntips; t++)
-        if (checkpoint_io(f, S->tip[t].J, sizeof S->tip[t].J, save))
+        if (checkpoint_io(f, S->tip[t].J, sizeof S->tip[t].J, save) ||
+            checkpoint_io(f, S->tip[t].KI, sizeof S->tip[t].KI, save) ||
+            checkpoint_io(f, S->tip[t].KII, sizeof S->tip[t].KII, save))
             return -1;
     if (!save)
         j_integral_tips(sim, S);

@@ -1,8 +1,9 @@
 /**
  * @file stage7.c
- * @brief Stage 7 adds fracture parameters: the J-integral at the tips of a
- *        crack that asks for it (cracks.[k].j_integral). A scene without
- *        the key subscribes nothing and runs as on stage 6.
+ * @brief Stage 7 adds fracture parameters: the J-integral, and K_I and
+ *        K_II by the interaction integral, at the tips of a crack that
+ *        asks for them (cracks.[k].j_integral). A scene without the key
+ *        subscribes nothing and runs as on stage 6.
  */
 #include "stage7.h"
 

@@ -1,7 +1,7 @@
 /**
  * @file stage7.h
  * @brief Installer of stage 7: fracture parameters of CRAMP cracks (the
- *        J-integral at their tips).
+ *        J-integral, K_I and K_II at their tips).
  */
 #ifndef MPM_STAGE7_H
 #define MPM_STAGE7_H

@@ -18,7 +18,8 @@
  * band is the arm's depth; its element is refined 1, 0.5, 0.25 mm.
  * Bounds, fixed before the first run: |J - G| <= 2 % of G on every contour
  * (G of the finest mesh), spread of the three J <= 1 %, on the finer
- * grid; the chapter-2 grid's numbers are printed, not bounded.
+ * grid; the chapter-2 grid's numbers are printed, not bounded, and so
+ * is (K_I^2 + K_II^2) / E' from chapter 7's interaction integral.
  */
 #include "testkit.h"
 
@@ -77,7 +78,7 @@ static double fea_G(const ArmLoad *L, double h, double E, double nu)
 /** Run the DCB (with @p overrides) to rest; J per contour into @p J,
  *  the upper arm's loads into @p L (may be NULL). */
 static void mpm_J(const char *const *overrides, double J[3], int *contour,
-                  double *cell, ArmLoad *L)
+                  double *cell, ArmLoad *L, double JK[3])
 {
     Sim *sim = tk_load_file("tests/7-fracture/scenes/dcb_j.cfg", overrides);
     const Load *ld = &sim->scene.loads[0];
@@ -98,9 +99,12 @@ static void mpm_J(const char *const *overrides, double J[3], int *contour,
     assert_non_null(S);
     assert_int_equal(S->ntips, 1);
     assert_int_equal(S->set[0].ncontours, 3);
+    double E = sim->scene.mat[0].E;     /* plane stress: E' = E */
     for (int m = 0; m < 3; m++) {
         J[m] = S->tip[0].J[m];
         contour[m] = S->set[0].contour[m];
+        JK[m] = (S->tip[0].KI[m] * S->tip[0].KI[m] +
+                 S->tip[0].KII[m] * S->tip[0].KII[m]) / E;
     }
     *cell = sim->grid.dx;
     tk_free(sim);
@@ -128,10 +132,10 @@ static void print_J(double cell, double cy, const double J[3],
 static void j_matches_compliance_G(void **state)
 {
     (void)state;
-    double J[3], Jc[3], cell, cellc;
+    double J[3], Jc[3], JK[3], JKc[3], cell, cellc;
     int contour[3], contourc[3];
     ArmLoad L;
-    mpm_J(NULL, J, contour, &cell, &L);
+    mpm_J(NULL, J, contour, &cell, &L, JK);
     const double E = 0.1, nu = 0.33;
     const double hs[3] = {1.0, 0.5, 0.25};
     double G[3];
@@ -146,11 +150,15 @@ static void j_matches_compliance_G(void **state)
     printf("    observed order %.2f; extrapolated G = %.6g (the finest %+.3f %% "
            "from it)\n", order, Gx, 100.0 * (G[2] / Gx - 1.0));
     double Gref = G[2];
-    mpm_J(coarse, Jc, contourc, &cellc, NULL);
+    mpm_J(coarse, Jc, contourc, &cellc, NULL, JKc);
     printf("  CRAMP, J on square domains about the tip (G of the 0.25 mm mesh):\n");
     printf("    cells (mm)    contour (cells)   J (N/mm)      J/G - 1\n");
     print_J(cellc, 2.0, Jc, contourc, Gref);
     print_J(cell, 1.0, J, contour, Gref);
+    printf("  K from the interaction integral, (K_I^2 + K_II^2)/E' against the "
+           "same G (printed, not bounded):\n");
+    print_J(cellc, 2.0, JKc, contourc, Gref);
+    print_J(cell, 1.0, JK, contour, Gref);
     TkBounds b = {0, 0};
     double lo = J[0], hi = J[0];
     for (int m = 0; m < 3; m++) {
