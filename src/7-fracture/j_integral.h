@@ -95,9 +95,11 @@ int j_integral_prepare(Sim *sim, void *state, char *err, size_t errlen);
  * states (stage 6's williams_field(), in the tip's frame: x1 ahead, x2
  * its left normal),
  *
- *   M^(m) = sum_p A_p [ (sigma_ij u^m_i,1 + sigma^m_ij u_i,1
- *                        - sigma_ij eps^m_ij delta_1j) q_,j
- *                       + rho (a_i + kappa v_i) u^m_i,1 q ],
+ * \verbatim
+   M^(m) = sum_p A_p [ (sigma_ij u^m_i,1 + sigma^m_ij u_i,1
+                        - sigma_ij eps^m_ij delta_1j) q_,j
+                       + rho (a_i + kappa v_i) u^m_i,1 q ]
+   \endverbatim
  *
  * K_I = E' M^(I) / 2, K_II = E' M^(II) / 2 (E' = E in plane stress,
  * E / (1 - nu^2) in plane strain; Yau, Chen and Shih 1980), with E and nu
@@ -114,7 +116,13 @@ int j_integral_evaluate(const Sim *sim, JState *S);
  *        the tip's frame (x1 ahead, x2 its left normal) and given in global
  *        axes: stress s[mode][i][j] and displacement gradient
  *        du[mode][i][j] = d u_i / d x_j.
+ * @param T            the tip (its place and frame)
+ * @param m            the material about it (E, nu)
  * @param plane_strain 1 for plane strain, 0 for plane stress
+ * @param x            where, x (mm)
+ * @param y            where, y (mm)
+ * @param s            out: the auxiliary stresses, per mode
+ * @param du           out: the auxiliary displacement gradients, per mode
  */
 void k_auxiliary(const JTip *T, const Material *m, int plane_strain,
                  double x, double y, double s[2][2][2], double du[2][2][2]);
