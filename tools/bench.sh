@@ -326,6 +326,15 @@ if [ -x "$S5" ] && command -v valgrind >/dev/null 2>&1; then
     med=$(printf '%s\n' "${ratios[@]}" | sort -n | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }')
     printf '  time of %d steps, stage 5 / stage 1, pair by pair: median %s of %s (goal within 2 %%)\n' \
         "$N" "$med" "${ratios[*]}"
+    echo
+    echo "stage 5: what contact between bodies costs USAVG (its Task 2 adds the held-contact"
+    echo "pass before the first stress update), the 50k disks, one field against touching"
+    for sch in musl usavg; do
+        read -r pts c1 t < <(bash tools/task1_cost.sh "$S5" tools/bench/disks_50k.cfg "" "run.update=$sch")
+        read -r pts c2 t < <(bash tools/task1_cost.sh "$S5" tools/bench/disks_50k_touching.cfg "" "run.update=$sch")
+        printf '  %-6s one field %5s, two groups touching %5s: contact adds %s per particle-step\n' \
+            "$sch" "$c1" "$c2" "$((c2 - c1))"
+    done
 fi
 
 # ---- error against cost ------------------------------------------------------
