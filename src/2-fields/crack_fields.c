@@ -6,6 +6,16 @@
 #include "cracks.h"
 #include "step.h"
 
+/** Hand the crossing @p hit of pair (@p p, @p a) to every subscriber. */
+static int cracks_tell_crossed(Sim *sim, const Cracks *C, int p, int a,
+                               const CrackHit *hit)
+{
+    for (int k = 0; k < C->ncrossed; k++)
+        if (C->crossed[k].fn(sim, C, p, a, hit, C->crossed[k].state))
+            return -1;
+    return 0;
+}
+
 /// [cracks_key_fields]
 int cracks_key_fields(Sim *sim, void *state, Seam seam)
 {
@@ -29,13 +39,23 @@ int cracks_key_fields(Sim *sim, void *state, Seam seam)
                 continue;                    /* field 0: nothing to key */
             if (fields_key(sim, p, a, (unsigned)f << C->side_shift))
                 return -1;
-            if (C->crossed && C->crossed(sim, C, p, a, &hit))
-                return -1;                   /* a later stage's subscriber */
+            if (C->ncrossed && cracks_tell_crossed(sim, C, p, a, &hit))
+                return -1;                   /* later stages' subscribers */
         }
     }
     return 0;
 }
 /// [cracks_key_fields]
+
+int cracks_on_crossed(Cracks *C, CrossedHook fn, void *state)
+{
+    if (C->ncrossed >= CRACKS_CROSSED_MAX)
+        return -1;
+    C->crossed[C->ncrossed].fn = fn;
+    C->crossed[C->ncrossed].state = state;
+    C->ncrossed++;
+    return 0;
+}
 
 int cracks_multi_field_nodes(const Sim *sim)
 {

@@ -63,20 +63,32 @@ typedef struct CrossingSearch {
 } CrossingSearch;
 /// [crossing_search]
 
+/** How many later stages may subscribe to Task 1's crossings. */
+#define CRACKS_CROSSED_MAX 4
+
+struct Cracks;
+
+/** A later stage's subscriber to the crossings of Task 1 (chapter 4's
+ *  crack normals): called for every pair (point @p p, corner @p a) that
+ *  Task 1 keys across a crack, after fields_key(), with the crossing that
+ *  decided its field and the subscriber's own @p state. @return 0, or -1
+ *  to stop the run (Sim::fail filled). */
+typedef int (*CrossedHook)(Sim *sim, const struct Cracks *C, int p, int a,
+                           const CrackHit *hit, void *state);
+
 /// [cracks_state]
 /** Stage 2's state: the cracks and how Task 1 searches them. */
 typedef struct Cracks {
     int ncracks;                  /**< number of cracks */
     Crack *crack;                 /**< the cracks */
     int side_shift;               /**< where the side sits in the field key */
-    /** A later stage's subscriber to the crossings of Task 1 (chapter 4's
-     *  crack normals; NULL: none): called for every pair (point @p p,
-     *  corner @p a) that Task 1 keys across a crack, after fields_key(),
-     *  with the crossing that decided its field. @return 0, or -1 to stop
-     *  the run (Sim::fail filled). */
-    int (*crossed)(Sim *sim, const struct Cracks *C, int p, int a,
-                   const CrackHit *hit);
-    void *crossed_state;          /**< the subscriber's own state */
+    /** Later stages' subscribers to Task 1's crossings, in the order
+     *  they subscribed (cracks_on_crossed()); none in stages 2 and 3. */
+    struct {
+        CrossedHook fn;           /**< the subscriber */
+        void *state;              /**< its own state */
+    } crossed[CRACKS_CROSSED_MAX];
+    int ncrossed;                 /**< how many */
     const CrossingSearch *search; /**< the scene's crossing search */
     void *search_state;           /**< the search's own data */
     /** Per grid cell (numbered by its lower-left node): negative when no
@@ -213,6 +225,10 @@ int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index,
 
 /** @brief history.csv column: number of multi-field nodes. */
 int cracks_history(const Sim *sim, void *state, FILE *f, int header);
+
+/** @brief Add @p fn (with @p state) to the subscribers of Task 1's
+ *         crossings. @return 0, or -1 when CRACKS_CROSSED_MAX are taken. */
+int cracks_on_crossed(Cracks *C, CrossedHook fn, void *state);
 
 /** @brief Save or restore the cracks' points (SEAM_CHECKPOINT). */
 int cracks_checkpoint(Sim *sim, void *state, FILE *f, int save);

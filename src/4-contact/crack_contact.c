@@ -19,10 +19,13 @@ int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     ContactState *S = state;
     Cracks *C = cracks_of(sim);
     const Scene *sc = &sim->scene;
-    C->crossed = crack_normals_crossed;      /* Task 1 hands each crossing */
-    C->crossed_state = &S->normals;
     S->vnode = calloc((size_t)sim->grid.nnodes, sizeof(double));
     S->volumes_step = -1;
+    if (cracks_on_crossed(C, crack_normals_crossed, &S->normals)) {
+        snprintf(err, errlen, "%s: crack contact: more than %d subscribers to "
+                 "the crack crossings", sc->file, CRACKS_CROSSED_MAX);
+        return -1;
+    }
     if (crack_normals_alloc(&S->normals, sim) || !S->vnode ||
         contact_decision_alloc(&S->decision, sim->grid.nnodes)) {
         snprintf(err, errlen, "%s: out of memory for crack contact", sc->file);

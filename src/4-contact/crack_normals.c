@@ -71,9 +71,9 @@ int crack_normals_alloc(CrackNormals *N, const Sim *sim)
 
 /// [crack_normals_crossed]
 int crack_normals_crossed(Sim *sim, const Cracks *C, int p, int a,
-                          const CrackHit *hit)
+                          const CrackHit *hit, void *state)
 {
-    CrackNormals *N = C->crossed_state;
+    CrackNormals *N = state;
     int r = sim->fields.row_of[p], k = STENCIL_NODES * r + a;
     if (r >= N->rows && clear_new_rows(sim, N, p))
         return -1;

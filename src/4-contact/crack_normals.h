@@ -5,8 +5,9 @@
  *        Task 1 found and the crack it belongs to; per extra slot, their
  *        sum and the lowest crack.
  *
- * Stage 2's Task 1 hands every crossing to crack_normals_crossed() (its
- * Cracks::crossed subscriber), which keeps the normal in the pair's row.
+ * Stage 2's Task 1 hands every crossing to its subscribers
+ * (cracks_on_crossed()); crack_normals_crossed() keeps the normal in the
+ * pair's row.
  * Once Task 1 has given every pair its slot, crack_normals_sum() adds the
  * rows into the slots, in the order of the rows. Only a scene with a crack
  * that has contact has any of this.
@@ -36,15 +37,15 @@ typedef struct CrackNormals {
 int crack_normals_alloc(CrackNormals *N, const Sim *sim);
 
 /**
- * @brief Task 1, stage 2's Cracks::crossed subscriber (its state, the
- *        CrackNormals, in Cracks::crossed_state): add the unit normal of
+ * @brief Task 1, a subscriber to stage 2's crossings (cracks_on_crossed();
+ *        @p state: the CrackNormals): add the unit normal of
  *        the crossed segment, from above the crack to below, to pair
  *        (@p p, @p a), with the crack's index as its tag; a pair keeps the
  *        lowest tag it is given.
  * @return 0, or -1 when memory is exhausted (Sim::fail filled).
  */
 int crack_normals_crossed(Sim *sim, const Cracks *C, int p, int a,
-                          const CrackHit *hit);
+                          const CrackHit *hit, void *state);
 
 /**
  * @brief After Task 1 (fields_resolve() gave every pair its slot): each
