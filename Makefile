@@ -1,6 +1,8 @@
-# The staged MPM book: `make stageN` builds build/stageN/mpm from the source
-# folders src/1-* .. src/N-*, with include paths for those folders only, so a
-# stage-1 file that reached for a later stage's header would not compile.
+# The staged MPM book: `make stageN` builds build/stageN/mpm from the base
+# floor src/0-base (the program around the method: scene reader, outputs,
+# checkpoint, run loop, main) and the stage folders src/1-* .. src/N-*, with
+# include paths for those folders only, so a stage-1 file that reached for a
+# later stage's header would not compile.
 #
 #   make stage1 ... stage7   one solver per chapter
 #   make check               every stage's tests, sanitizer builds, exercises
@@ -36,9 +38,10 @@ TEST_LIBS := -lcmocka -llapacke $(LIBS)
 STAGE_DIRS := $(sort $(wildcard src/[1-9]-*))
 stage_num = $(firstword $(subst -, ,$(notdir $(1))))
 STAGES := $(foreach d,$(STAGE_DIRS),$(call stage_num,$(d)))
-# folders of stages 1..N
+# folders of stages 1..N; every stage compiles the base floor too
+BASE_DIR := src/0-base
 upto = $(foreach d,$(1),$(if $(filter $(call stage_num,$(d)),$(wordlist 1,$(2),1 2 3 4 5 6 7 8 9)),$(d)))
-dirs_upto = $(call upto,$(STAGE_DIRS),$(1))
+dirs_upto = $(BASE_DIR) $(call upto,$(STAGE_DIRS),$(1))
 # Each thing is tested once: chapter K's tests run on stage K, the release
 # and the sanitizer build.  A later stage runs the same code on the same
 # scenes, and scene_same_numbers proves that its outputs are the same bytes.
@@ -71,7 +74,7 @@ $$(B_$(1)_$(2))/libmpm.a: $$(filter-out %/main.o,$$(OBJ_$(1)_$(2)))
 	@rm -f $$@
 	ar rcs $$@ $$^
 
-$$(B_$(1)_$(2))/mpm: $$(B_$(1)_$(2))/obj/1-mpm/main.o $$(B_$(1)_$(2))/libmpm.a
+$$(B_$(1)_$(2))/mpm: $$(B_$(1)_$(2))/obj/0-base/main.o $$(B_$(1)_$(2))/libmpm.a
 	$$(CC) $$(LDFLAGS_$(1)) $$^ $$(call stage_libs,$(2)) -o $$@
 
 $$(B_$(1)_$(2))/tests/support/%.o: tests/support/%.c

@@ -36,7 +36,7 @@
 
 #include "cracks.h"
 #include "q4.h"
-#include "sim.h"
+#include "scene_load.h"
 #include "stages.h"
 
 #define LENGTH 100.0             /* beam length (mm), from x = 0 */

@@ -6,7 +6,6 @@
 #ifndef MPM_SIM_H
 #define MPM_SIM_H
 
-#include <signal.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -63,16 +62,6 @@ typedef struct Sim {
                               before loading; 0: the memory available */
 } Sim;
 
-/** How sim_run() runs: what it prints, and when it stops before the end. */
-typedef struct RunOptions {
-    int progress;       /**< print a progress line on standard error */
-    int restart;        /**< go on from the output directory's checkpoint */
-    long stop_at;       /**< stop after this step as if interrupted (0: no) */
-    /** set to a signal's number by the caller's handler (NULL: none):
-     *  the run stops after the step it is in */
-    const volatile sig_atomic_t *interrupt;
-} RunOptions;
-
 /** Quantities that history.csv records at one instant. */
 typedef struct Totals {
     double kinetic;     /**< sum 1/2 m v^2 (mJ) */
@@ -91,20 +80,6 @@ int sim_attach(Sim *sim, const char *name, void *state,
 
 /** @brief The state attached under @p name, or NULL. */
 void *sim_state(const Sim *sim, const char *name);
-
-/**
- * @brief Read a scene file, apply "key.path=value" overrides, generate the
- *        points and prepare the grid and the time step. A scene whose
- *        estimated memory exceeds Sim::memory_limit is refused before
- *        anything is allocated for its points and grid.
- * @return 0, or non-zero with a message "file:line: ..." in @p err.
- */
-int sim_load_file(Sim *sim, const char *path, int noverrides,
-                  char *const *overrides, char *err, size_t errlen);
-
-/** @brief As sim_load_file() for a scene held in a string named @p name. */
-int sim_load_string(Sim *sim, const char *text, const char *name,
-                    char *err, size_t errlen);
 
 /**
  * @brief Recompute the time step from the current point velocities and
@@ -132,22 +107,6 @@ int sim_advance(Sim *sim);
 
 /** @brief Energies and momentum of the points now. */
 Totals sim_totals(const Sim *sim);
-
-/**
- * @brief Run to the scene's end time writing output into @p outdir.
- *
- * A stop before the end (an interrupt, RunOptions::stop_at) writes the
- * points (particles_final.csv) and a checkpoint, from which a run with
- * RunOptions::restart goes on to the same bytes an unbroken run writes.
- * @param sim    a loaded simulation
- * @param outdir output directory, created if missing
- * @param opt    what to print and when to stop or save
- * @return 0 (also after a stop at RunOptions::stop_at), 1 when the
- *         checkpoint to restart from is refused, 2 on an output error,
- *         3 when the run went unstable, 128 + the signal's number when
- *         interrupted.
- */
-int sim_run(Sim *sim, const char *outdir, const RunOptions *opt);
 
 /** @brief Release everything the simulation holds. */
 void sim_free(Sim *sim);

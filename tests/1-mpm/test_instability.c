@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "run.h"
 #include "testkit.h"
 
 static const char *const SCENE = "tests/1-mpm/scenes/usl_unstable.cfg";

@@ -21,7 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sim.h"
+#include "scene_load.h"
 #include "stages.h"
 
 /** The fuzzer's entry point: one input, 0 when it was handled. */

@@ -14,7 +14,7 @@
 
 #include <math.h>
 
-#include "sim.h"
+#include "scene_load.h"
 
 /** Fail the test unless |a - b| <= tol (cmocka 1.1 has no double compare). */
 #define assert_close(a, b, tol)                                                \

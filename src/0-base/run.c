@@ -15,6 +15,7 @@
 #include "checkpoint.h"
 #include "outfile.h"
 #include "output.h"
+#include "run.h"
 #include "sim.h"
 #include "step.h"
 

@@ -9,6 +9,8 @@
 #include <string.h>
 
 #include "checkpoint.h"
+#include "run.h"
+#include "scene_load.h"
 #include "scene_keys.h"
 #include "sim.h"
 #include "stages.h"
