@@ -25,22 +25,6 @@ typedef struct Stencil {
     double Gy[STENCIL_NODES]; /**< gradients dS/dy */
 } Stencil;
 
-/** @brief The stencil of a position: nodes and shape functions; every
- *         pair in field 0 (crack points, output). */
-static inline void stencil_at(const Grid *g, double x, double y, Stencil *st)
-{
-    double xi, eta;
-    int cell = shape_locate(g, x, y, &xi, &eta);
-    shape_linear(xi, eta, g->idx, g->idy, st->S, st->Gx, st->Gy);
-    shape_cell_nodes(g, cell, st->slot);
-}
-
-/** @brief The nodes of point @p p's stencil (Task 1 needs no more). */
-static inline void stencil_nodes(const Sim *sim, int p, int node[STENCIL_NODES])
-{
-    shape_cell_nodes(&sim->grid, sim->pts.cell[p], node);
-}
-
 /** @brief The stencil of point @p p from its cell found in Task 0, with
  *         the field slots Task 1 gave its pairs. */
 static inline void stencil_of_point(const Sim *sim, int p, Stencil *st)
@@ -58,5 +42,21 @@ static inline void stencil_of_point(const Sim *sim, int p, Stencil *st)
     }
 }
 /// [stencil]
+
+/** @brief The stencil of a position: nodes and shape functions; every
+ *         pair in field 0 (crack points, output). */
+static inline void stencil_at(const Grid *g, double x, double y, Stencil *st)
+{
+    double xi, eta;
+    int cell = shape_locate(g, x, y, &xi, &eta);
+    shape_linear(xi, eta, g->idx, g->idy, st->S, st->Gx, st->Gy);
+    shape_cell_nodes(g, cell, st->slot);
+}
+
+/** @brief The nodes of point @p p's stencil (Task 1 needs no more). */
+static inline void stencil_nodes(const Sim *sim, int p, int node[STENCIL_NODES])
+{
+    shape_cell_nodes(&sim->grid, sim->pts.cell[p], node);
+}
 
 #endif
