@@ -15,17 +15,12 @@
 #include "cohesive.h"
 #include "quadrature.h"
 
-/** The body holding (px, py) strictly inside (a margin @p eps), or -1. */
-static int body_at(const Scene *sc, double px, double py, double eps)
+/** The first body holding (px, py) (edges included), or -1. */
+static int body_at(const Scene *sc, double px, double py)
 {
-    for (int b = 0; b < sc->nbodies; b++) {
-        const Shape *s = &sc->bodies[b].shape;
-        if (shape_contains(s, px - eps, py - eps) &&
-            shape_contains(s, px + eps, py - eps) &&
-            shape_contains(s, px - eps, py + eps) &&
-            shape_contains(s, px + eps, py + eps))
+    for (int b = 0; b < sc->nbodies; b++)
+        if (shape_contains(&sc->bodies[b].shape, px, py))
             return b;
-    }
     return -1;
 }
 
@@ -96,22 +91,22 @@ static int add_point(Cohesive *c, const Xefg *x, const ShapeRows *R, int k,
  *  where (a + s t) lies in a body, found by a walk of steps @p step and
  *  bisection; 0 when it has none from @p from on. */
 static int inside_part(const Scene *sc, const double a[2], const double t[2],
-                       double len, double from, double step, double eps,
+                       double len, double from, double step,
                        double *s0, double *s1)
 {
     int n = (int)ceil((len - from) / step);
     double prev = from;
-    int in = body_at(sc, a[0] + from * t[0], a[1] + from * t[1], eps) >= 0;
+    int in = body_at(sc, a[0] + from * t[0], a[1] + from * t[1]) >= 0;
     if (in)
         *s0 = from;
     for (int i = 1; i <= n; i++) {
         double s = fmin(from + i * step, len);
-        int now = body_at(sc, a[0] + s * t[0], a[1] + s * t[1], eps) >= 0;
+        int now = body_at(sc, a[0] + s * t[0], a[1] + s * t[1]) >= 0;
         if (now != in) {
             double lo = prev, hi = s;              /* the boundary between */
             for (int it = 0; it < 60; it++) {
                 double mid = 0.5 * (lo + hi);
-                int m = body_at(sc, a[0] + mid * t[0], a[1] + mid * t[1], eps) >= 0;
+                int m = body_at(sc, a[0] + mid * t[0], a[1] + mid * t[1]) >= 0;
                 if (m == in)
                     lo = mid;
                 else
@@ -143,7 +138,7 @@ static int crack_points(Cohesive *c, const Xefg *x, const Sim *sim,
     const Scene *sc = &sim->scene;
     const CrackLine *l = &x->crack[k];
     int n = x->set.gauss;
-    double xi[GAUSS_MAX], gw[GAUSS_MAX], eps = 1e-9 * h;
+    double xi[GAUSS_MAX], gw[GAUSS_MAX];
     gauss_legendre(n, xi, gw);
     for (int g = 0; g + 1 < l->n; g++) {
         double a[2] = {l->x[g], l->y[g]};
@@ -151,14 +146,14 @@ static int crack_points(Cohesive *c, const Xefg *x, const Sim *sim,
         double t[2] = {(l->x[g + 1] - a[0]) / len, (l->y[g + 1] - a[1]) / len};
         double s0 = 0.0, s1 = 0.0;
         while (s1 < len &&
-               inside_part(sc, a, t, len, s1, 0.125 * h, eps, &s0, &s1)) {
+               inside_part(sc, a, t, len, s1, 0.125 * h, &s0, &s1)) {
             int pieces = (int)ceil((s1 - s0) / h);
             double ds = (s1 - s0) / pieces;
             for (int p = 0; p < pieces; p++)
                 for (int i = 0; i < n; i++) {
                     double s = s0 + ds * (p + 0.5 * (1.0 + xi[i]));
                     double px = a[0] + s * t[0], py = a[1] + s * t[1];
-                    int b = body_at(sc, px, py, 0.0);
+                    int b = body_at(sc, px, py);
                     R->n = R->len = 0;
                     int rc = b < 0 ? -1 : xefg_shape_row(x, cl, sim->pts.body,
                                                          b, px, py, 0, R);
