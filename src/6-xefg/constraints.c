@@ -160,6 +160,12 @@ void xefg_constraints_apply(Xefg *x, double t)
             c->r[a] = s - v[k];
         }
         LAPACKE_dpotrs(LAPACK_ROW_MAJOR, 'L', c->n, 1, c->S, c->n, c->r, 1);
+        if (x->coh)          /* the work of the held places (a cohesive */
+            for (int a = 0; a < c->n; a++) {  /* crack's energy balance): */
+                double v[2];                  /* impulse -lambda times the */
+                hold_velocity(c->hold[a], t, v);    /* held velocity */
+                x->w_held -= c->r[a] * v[k];
+            }
         for (int a = 0; a < c->n; a++)            /* v -= M^-1 G^T lambda */
             for (int e = G->start[a]; e < G->start[a + 1]; e++) {
                 int q = G->dof[e];

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cohesive.h"
 #include "xefg.h"
 
 /** Most iterations. */
@@ -44,6 +45,8 @@ int xefg_power_iteration(Xefg *x, const Sim *sim)
         memset(gs, 0, 3 * sizeof(double) * (size_t)x->ngauss);
         xefg_strain_update(x, sim, z, gs, NULL);    /* sigma = C eps(z) */
         xefg_internal_force(x, gs, kz);             /* K z */
+        if (x->coh)                                 /* the penalty's K */
+            cohesive_stiffness(x->coh, z, kz);
         double zkz = 0.0;
         for (size_t k = 0; k < n2; k++)
             zkz += z[k] * kz[k];                    /* Rayleigh quotient */

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "checkpoint.h"
+#include "cohesive.h"
 #include "quadrature.h"
 #include "scene_read.h"
 #include "xefg.h"
@@ -160,14 +161,36 @@ static int xefg_checkpoint(Sim *sim, void *state, FILE *f, int save)
     return 0;
 }
 
+/** A cohesive crack under another method: refused at its first
+ *  `cohesive` group (CRAMP's cracks are traction-free or in contact). */
+static int cohesive_refused(const Sim *sim, char *err, size_t errlen)
+{
+    const Cohesive *c = cohesive_of(sim);
+    for (int k = 0; c && k < c->ncrack; k++) {
+        if (!c->set[k].on)
+            continue;
+        char at[SCENE_AT_LEN];
+        snprintf(err, errlen, "%s: cohesive: a cohesive law acts in the XEFG "
+                 "method only, but run.method is \"%s\": add method = \"xefg\" "
+                 "to run, or remove the cohesive group of crack %d",
+                 scene_lines_at(sim->scene.lines, sim->scene.file,
+                                c->set[k].line, at, SCENE_AT_LEN),
+                 sim->scene.run.method->name, k);
+        return -1;
+    }
+    return 0;
+}
+
 /// [xefg_prepare]
 /** Set-up of a scene that chooses the method: the discretisation, then the
- *  history columns and the checkpoint section. */
+ *  history columns and the checkpoint section (and a cohesive crack's). */
 static int xefg_prepare(Sim *sim, void *state, char *err, size_t errlen)
 {
     (void)state;
     Xefg *x = xefg_of(sim);
     if (sim->scene.run.method != &xefg_method) {
+        if (cohesive_refused(sim, err, errlen))
+            return -1;
         if (!x)
             return 0;                        /* an MPM scene: nothing */
         char at[SCENE_AT_LEN];
@@ -187,7 +210,8 @@ static int xefg_prepare(Sim *sim, void *state, char *err, size_t errlen)
     xefg_to_points(x, sim);
     if (hooks_on_history(&sim->hooks, xefg_history, x) ||
         hooks_on_report(&sim->hooks, xefg_report, x) ||
-        hooks_on_checkpoint(&sim->hooks, xefg_checkpoint, x)) {
+        hooks_on_checkpoint(&sim->hooks, xefg_checkpoint, x) ||
+        (x->coh && cohesive_subscribe(sim, x->coh))) {
         snprintf(err, errlen, "%s: too many subscribers at a seam",
                  sim->scene.file);
         return -1;
@@ -201,6 +225,7 @@ void stage6_install(Hooks *h)
 {
     hooks_add_choice(h, "run.method", "xefg", &xefg_method);
     hooks_add_key(h, "", "xefg", xefg_read, xefg_keys);
+    hooks_add_key(h, "cracks", "cohesive", cohesive_read, cohesive_keys);
     hooks_on_prepare(h, xefg_prepare, NULL);
 }
 /// [stage6_install]

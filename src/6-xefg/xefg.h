@@ -17,6 +17,8 @@
 #include "crack_line.h"
 #include "sim.h"
 
+struct Cohesive;
+
 /** The scene's `xefg` section. */
 typedef struct XefgSettings {
     double support;   /**< support radius over point spacing, d / h (2) */
@@ -93,6 +95,10 @@ typedef struct Xefg {
     double stable_step; /**< critical step 2 / omega_max (power iteration) */
     double omega_max;   /**< its highest frequency estimate */
     int power_iterations; /**< iterations it took */
+    struct Cohesive *coh; /**< cohesive cracks (cohesive.h; NULL: none) */
+    double w_held;      /**< work of the held places so far (counted when
+                             a crack is cohesive) */
+    double e0;          /**< kinetic + strain energy at the start */
 } Xefg;
 
 /** @brief The XEFG state of @p sim (NULL when the method is not xefg). */

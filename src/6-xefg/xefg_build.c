@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cohesive.h"
 #include "cracks.h"
 #include "footprint.h"
 #include "quadrature.h"
@@ -385,6 +386,9 @@ int xefg_build(Xefg *x, const Sim *sim, char *err, size_t errlen)
         goto oom;
     if (xefg_constraints_build(x, sim, &cl, sim->pts.body, err, errlen))
         goto done;
+    if ((x->coh = cohesive_of(sim)) &&              /* before the stable step */
+        cohesive_build(x->coh, x, sim, &cl, err, errlen))
+        goto done;
     if (xefg_power_iteration(x, sim)) {
         snprintf(err, errlen, "%s: the power iteration for the stable time "
                  "step gave no finite frequency (highest %g)", sim->scene.file,
@@ -392,6 +396,7 @@ int xefg_build(Xefg *x, const Sim *sim, char *err, size_t errlen)
         goto done;
     }
     xefg_accelerations(x, sim, 0.0);              /* a(0) */
+    x->e0 = xefg_kinetic_energy(x) + xefg_strain_energy(x, sim);
     rc = 0;
     goto done;
 oom:

@@ -6,6 +6,7 @@
  */
 #include <string.h>
 
+#include "cohesive.h"
 #include "xefg.h"
 
 /// [xefg_gauss_point]
@@ -72,6 +73,8 @@ void xefg_update_and_force(const Xefg *x, const Sim *sim, const double *du,
         gauss_update(x, sim, g, du, x->gs + 3 * g, x->ge + 3 * g);
         gauss_scatter(&x->gauss, g, x->gw[g], x->gs + 3 * g, f);
     }
+    if (x->coh)                                     /* the crack's tractions */
+        cohesive_force(x->coh, x->u, f, 1);
 }
 /// [xefg_update_and_force]
 

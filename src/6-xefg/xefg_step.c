@@ -8,6 +8,7 @@
  */
 #include <math.h>
 
+#include "cohesive.h"
 #include "step.h"
 #include "xefg.h"
 
@@ -58,6 +59,8 @@ static int check_finite(const Xefg *x, Sim *sim)
 void xefg_accelerations(Xefg *x, const Sim *sim, double t)
 {
     xefg_internal_force(x, x->gs, x->a);
+    if (x->coh)
+        cohesive_force(x->coh, x->u, x->a, 1);
     xefg_accelerations_from(x, sim, t);
 }
 
