@@ -71,6 +71,7 @@ void mpm_install_stages(Hooks *h)
     stage6_install(h);
 #else
     hooks_add_refusal(h, "run.method", "xefg", "stage 6 (the XEFG meshfree method)");
+    hooks_add_refusal(h, "cracks.cohesive", NULL, "stage 6 (cohesive XEFG cracks)");
 #endif
     hooks_begin_stage(h, 7);
 #if MPM_STAGE >= 7
