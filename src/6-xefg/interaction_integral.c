@@ -76,6 +76,17 @@ static double weight_slope(double r, double rd)
     return 6.0 * t * (t - 1.0) / rd;
 }
 
+/** The weight q itself (for the inertia term, which q multiplies). */
+static double weight(double r, double rd)
+{
+    if (r <= rd)
+        return 1.0;
+    if (r >= 2.0 * rd)
+        return 0.0;
+    double t = r / rd - 1.0;
+    return 1.0 - 3.0 * t * t + 2.0 * t * t * t;
+}
+
 /// [xefg_stress_intensity]
 int xefg_stress_intensity(const Sim *sim, int crack, int end, double radius,
                           double K[2])
@@ -99,6 +110,7 @@ int xefg_stress_intensity(const Sim *sim, int crack, int end, double radius,
      * at end 0 were mirrored, K_I came out near 0 and K_II with the wrong
      * sign (issue 27). */
     int turn = end == 0 ? -1 : 1;
+    double damping = sim->scene.run.damping;
     const Particles *P = &sim->pts;
     int mat = -1, used = 0;
     double I[2] = {0.0, 0.0};
@@ -106,8 +118,10 @@ int xefg_stress_intensity(const Sim *sim, int crack, int end, double radius,
         double dx = x->gx[gp] - tip[0], dy = x->gy[gp] - tip[1];
         double x1 = e[0][0] * dx + e[0][1] * dy, x2 = e[1][0] * dx + e[1][1] * dy;
         double r = hypot(x1, x2), dq = weight_slope(r, radius);
-        if (dq == 0.0)
-            continue;                             /* q_,j = 0 off the ring */
+        double qw = weight(r, radius);
+        if (qw == 0.0 || r == 0.0)
+            continue;                 /* q = 0 beyond the ring (r = 0: a
+                                         point of no area at the tip) */
         int I0 = x->gnode[gp];
         if (mat < 0)
             mat = P->mat[I0];
@@ -123,13 +137,18 @@ int xefg_stress_intensity(const Sim *sim, int crack, int end, double radius,
         /* sigma and grad u in global axes: u_i,j = sum_q u_qi psi_q,j */
         const double *sg = x->gs + 3 * gp;
         double S[2][2] = {{sg[0], sg[2]}, {sg[2], sg[1]}}, G[2][2] = {{0}};
+        double A[2] = {0.0, 0.0};     /* a + kappa v, as eq. of motion has */
         for (int k = x->gauss.start[gp]; k < x->gauss.start[gp + 1]; k++) {
             int q = x->gauss.dof[k];
             for (int i = 0; i < 2; i++) {
                 G[i][0] += x->u[2 * q + i] * x->gauss.Nx[k];
                 G[i][1] += x->u[2 * q + i] * x->gauss.Ny[k];
+                A[i] += (x->a[2 * q + i] + damping * x->v[2 * q + i]) *
+                        x->gauss.N[k];
             }
         }
+        double At[2] = {e[0][0] * A[0] + e[0][1] * A[1],     /* tip frame */
+                        e[1][0] * A[0] + e[1][1] * A[1]};
         /* to the tip's frame: A'_ij = e_i . A . e_j */
         double s[2][2], gu[2][2];
         for (int i = 0; i < 2; i++)
@@ -165,6 +184,9 @@ int xefg_stress_intensity(const Sim *sim, int crack, int end, double radius,
             for (int i = 0; i < 2; i++)
                 for (int j = 0; j < 2; j++)
                     sum += (s[i][j] * dua[2 * i] + sa[i][j] * gu[i][0]) * qj[j];
+            /* inertia: rho (a_i + kappa v_i) u^aux_i,1 q (the auxiliary
+             * state is static: no kinetic cross term) */
+            sum += m->rho * (At[0] * dua[0] + At[1] * dua[2]) * qw;
             I[mode - 1] += w * sum;
         }
     }

@@ -40,8 +40,10 @@ void williams_field(int mode, double mu, double kappa, double r, double theta,
  *        integral
  *
  *   I^(m) = int_A [sigma_ij u^m_i,1 + sigma^m_ij u_i,1 - sigma^m_ij eps_ij
- *           delta_1j] q_,j dA
+ *           delta_1j] q_,j dA + int_A rho (a_i + kappa v_i) u^m_i,1 q dA
  *
+ * (the second integral, the inertia of a moving body, is zero at rest;
+ * the auxiliary state is static, so no kinetic term crosses),
  * in the tip's frame (x1 ahead of the crack, x2 its left normal, at
  * either end: a straight crack under a uniform remote stress has the same
  * K_I and K_II at both tips), m = I, II the auxiliary Williams fields of
