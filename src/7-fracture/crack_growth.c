@@ -85,7 +85,18 @@ int crack_growth_step(Sim *sim, CrackGrowth *G, JState *S)
         Crack *c = &C->crack[T->crack];
         double J, KI, KII;
         growth_parameters(S, T, &J, &KI, &KII);
-        if (e->through || !(J >= s->G_c))
+        if (e->through)
+            continue;
+        if (s->average > 0.0) {             /* the block's mean J decides */
+            e->Jsum += J;
+            e->nsum++;
+            if (e->nsum * S->every * sim->dt < s->average)
+                continue;
+            J = e->Jsum / e->nsum;
+            e->Jsum = 0.0;
+            e->nsum = 0;
+        }
+        if (!(J >= s->G_c))
             continue;                       /* when: J reaches G_c */
         if (c->n - 1 >= s->max_segments)
             return step_fail(sim, -1, s->full, s->max_segments);
@@ -103,8 +114,11 @@ int crack_growth_step(Sim *sim, CrackGrowth *G, JState *S)
         if (!domain_in_grid(g, c->x[i], c->y[i], widest))
             return step_fail(sim, -1, "crack tip (its J domain grew out of "
                              "the grid)", c->x[i]);
-        *e = (GrowthEnd){e->events + 1, sim->step + 1, J, theta,
-                         !in_a_body(&sim->scene, c->x[i], c->y[i])};
+        e->events++;
+        e->last_step = sim->step + 1;
+        e->J = J;
+        e->theta = theta;
+        e->through = !in_a_body(&sim->scene, c->x[i], c->y[i]);
         grown = 1;
     }
     if (!grown)
@@ -184,7 +198,9 @@ int crack_growth_checkpoint(Sim *sim, void *state, FILE *f, int save)
             checkpoint_io(f, &e->last_step, sizeof e->last_step, save) ||
             checkpoint_io(f, &e->J, sizeof e->J, save) ||
             checkpoint_io(f, &e->theta, sizeof e->theta, save) ||
-            checkpoint_io(f, &e->through, sizeof e->through, save))
+            checkpoint_io(f, &e->through, sizeof e->through, save) ||
+            checkpoint_io(f, &e->Jsum, sizeof e->Jsum, save) ||
+            checkpoint_io(f, &e->nsum, sizeof e->nsum, save))
             return -1;
     }
     /* stage 2 restored the points (a grown crack with exactly as many

@@ -20,6 +20,9 @@ typedef struct GrowthSettings {
     double G_c;           /**< toughness: J at which a tip grows (N/mm) */
     double length;        /**< length of a new segment (mm) */
     int max_segments;     /**< room reserved, in segments (0: default) */
+    double average;       /**< J decides as its mean over consecutive
+                               blocks of evaluations spanning this time
+                               (ms); 0: each evaluation alone */
     int line;             /**< line of the key (scene_lines_at()) */
     int max_line;         /**< line of max_segments (or of the key) */
     /** "the segments of crack k (...)": Sim::fail's quantity when full */
@@ -34,6 +37,8 @@ typedef struct GrowthEnd {
     double theta;         /**< its kink angle (rad, from ex, ey towards
                                the left normal -ey, ex) */
     int through;          /**< 1 once it grew out of every body: no more */
+    double Jsum;          /**< sum of J over the block so far */
+    long nsum;            /**< evaluations in it */
 } GrowthEnd;
 
 /// [crack_growth_state]

@@ -11,7 +11,8 @@
 #include "cracks.h"
 #include "scene_read.h"
 
-const char *const crack_growth_keys[] = {"G_c", "length", "max_segments", NULL};
+const char *const crack_growth_keys[] = {"G_c", "length", "max_segments", "average",
+                                             NULL};
 
 /** Most segments a crack may reserve room for. */
 #define GROWTH_MAX_SEGMENTS 10000000
@@ -54,7 +55,7 @@ static int growth_fit(CrackGrowth *G, int index)
     G->end = e;
     memset(s + G->ncracks, 0, sizeof *s * (size_t)(index + 1 - G->ncracks));
     for (int k = 2 * G->ncracks; k < 2 * (index + 1); k++)
-        e[k] = (GrowthEnd){0, -1, 0.0, 0.0, 0};
+        e[k] = (GrowthEnd){.last_step = -1};
     G->ncracks = index + 1;
     return 0;
 }
@@ -84,11 +85,16 @@ int crack_growth_read(Sim *sim, const config_setting_t *s, int index,
     if (scene_number(r, s, "G_c", 1, 0.0, &g->G_c) < 0 ||
         scene_number(r, s, "length", 0, 0.5 * fmin(sc->dx, sc->dy),
                      &g->length) < 0 ||
-        scene_number(r, s, "max_segments", 0, 0.0, &max) < 0)
+        scene_number(r, s, "max_segments", 0, 0.0, &max) < 0 ||
+        scene_number(r, s, "average", 0, 0.0, &g->average) < 0)
         return -1;
     if (!(g->G_c > 0.0 && isfinite(g->G_c)))
         return scene_error(r, config_setting_get_member(s, "G_c"), "G_c",
                            "%g: the toughness must be positive", g->G_c);
+    if (!(g->average >= 0.0 && isfinite(g->average)))
+        return scene_error(r, config_setting_get_member(s, "average"), "average",
+                           "%g: a time >= 0 (0: each evaluation alone)",
+                           g->average);
     if (!(g->length > 0.0 && isfinite(g->length)))
         return scene_error(r, config_setting_get_member(s, "length"), "length",
                            "%g: a new segment's length must be positive",
@@ -131,7 +137,8 @@ int crack_growth_prepare(Sim *sim, void *state, char *err, size_t errlen)
             return -1;
         }
         snprintf(s->full, sizeof s->full, "segments of crack %d, all the "
-                 "room reserved (max_segments, %s)", k, at);
+                 "room reserved (cracks.[%d].growth.max_segments, %s)", k, k,
+                 scene_lines_at(sc->lines, sc->file, s->line, at, sizeof at));
         if (crack_reserve_points(c, s->max_segments + 1)) {
             snprintf(err, errlen, "%s: growth: out of memory for %d segments",
                      at, s->max_segments);
