@@ -87,13 +87,17 @@ int crack_growth_step(Sim *sim, CrackGrowth *G, JState *S)
         growth_parameters(S, T, &J, &KI, &KII);
         if (e->through)
             continue;
-        if (s->average > 0.0) {             /* the block's mean J decides */
+        if (s->average > 0.0) {             /* the block's means decide */
             e->Jsum += J;
+            e->Ksum[0] += KI;
+            e->Ksum[1] += KII;
             e->nsum++;
             if (e->nsum * S->every * sim->dt < s->average)
                 continue;
             J = e->Jsum / e->nsum;
-            e->Jsum = 0.0;
+            KI = e->Ksum[0] / e->nsum;
+            KII = e->Ksum[1] / e->nsum;
+            e->Jsum = e->Ksum[0] = e->Ksum[1] = 0.0;
             e->nsum = 0;
         }
         if (!(J >= s->G_c))
@@ -107,18 +111,18 @@ int crack_growth_step(Sim *sim, CrackGrowth *G, JState *S)
               c->y[i] >= g->oy && c->y[i] < g->oy + g->ncy * g->dy))
             return step_fail(sim, -1, "crack point (grew out of the grid)",
                              c->x[i]);
-        int widest = 0;
+        int widest = 0, out = !in_a_body(&sim->scene, c->x[i], c->y[i]);
         for (int m = 0; m < S->set[T->crack].ncontours; m++)
             widest = S->set[T->crack].contour[m] > widest
                          ? S->set[T->crack].contour[m] : widest;
-        if (!domain_in_grid(g, c->x[i], c->y[i], widest))
+        if (!out && !domain_in_grid(g, c->x[i], c->y[i], widest))
             return step_fail(sim, -1, "crack tip (its J domain grew out of "
                              "the grid)", c->x[i]);
         e->events++;
         e->last_step = sim->step + 1;
         e->J = J;
         e->theta = theta;
-        e->through = !in_a_body(&sim->scene, c->x[i], c->y[i]);
+        e->through = out;                   /* cut through: no more growth */
         grown = 1;
     }
     if (!grown)
@@ -200,6 +204,7 @@ int crack_growth_checkpoint(Sim *sim, void *state, FILE *f, int save)
             checkpoint_io(f, &e->theta, sizeof e->theta, save) ||
             checkpoint_io(f, &e->through, sizeof e->through, save) ||
             checkpoint_io(f, &e->Jsum, sizeof e->Jsum, save) ||
+            checkpoint_io(f, e->Ksum, sizeof e->Ksum, save) ||
             checkpoint_io(f, &e->nsum, sizeof e->nsum, save))
             return -1;
     }

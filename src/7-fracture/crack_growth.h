@@ -22,7 +22,8 @@ typedef struct GrowthSettings {
     int max_segments;     /**< room reserved, in segments (0: default) */
     double average;       /**< J decides as its mean over consecutive
                                blocks of evaluations spanning this time
-                               (ms); 0: each evaluation alone */
+                               (ms), and K_I, K_II as theirs; 0: each
+                               evaluation alone */
     int line;             /**< line of the key (scene_lines_at()) */
     int max_line;         /**< line of max_segments (or of the key) */
     /** "the segments of crack k (...)": Sim::fail's quantity when full */
@@ -38,6 +39,7 @@ typedef struct GrowthEnd {
                                the left normal -ey, ex) */
     int through;          /**< 1 once it grew out of every body: no more */
     double Jsum;          /**< sum of J over the block so far */
+    double Ksum[2];       /**< sums of K_I and K_II over it */
     long nsum;            /**< evaluations in it */
 } GrowthEnd;
 
