@@ -51,6 +51,21 @@ int crack_alloc_points(Crack *c, int n)
     return c->x && c->y ? 0 : -1;
 }
 
+int crack_reserve_points(Crack *c, int cap)
+{
+    if (cap < c->n)
+        return 0;
+    double *x = realloc(c->x, sizeof(double) * (size_t)cap);
+    if (!x)
+        return -1;
+    c->x = x;
+    double *y = realloc(c->y, sizeof(double) * (size_t)cap);
+    if (!y)
+        return -1;
+    c->y = y;
+    return 0;
+}
+
 /// [crack_check_points]
 int crack_check_points(SceneReader *r, const config_setting_t *s,
                        const char *key, const Scene *sc, Crack *c)

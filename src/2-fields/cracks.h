@@ -171,6 +171,12 @@ int crack_self_crossing(const Crack *c, int *i, int *j);
  *  @return 0, or -1 when memory is exhausted. */
 int crack_alloc_points(Crack *c, int n);
 
+/** @brief Make room for @p cap points in @p c, keeping its Crack::n
+ *         points (a later stage that adds points reserves at set-up, so
+ *         that a step allocates nothing). @return 0, or -1 when memory is
+ *         exhausted (the points are kept). */
+int crack_reserve_points(Crack *c, int cap);
+
 /**
  * @brief Check a crack's points as the scene gave them under @p key of
  *        setting @p s: inside the grid, no segment of zero length, no

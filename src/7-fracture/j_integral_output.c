@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "checkpoint.h"
+#include "crack_growth.h"
 #include "j_integral.h"
 #include "step.h"
 
@@ -25,7 +26,9 @@ int j_integral_task7(Sim *sim, void *state, Seam seam)
     }
     S->at_step = done;
     S->at_time = sim->t + sim->dt;
-    return 0;
+    /* growth acts on a fresh J only (cracks.[k].growth) */
+    CrackGrowth *G = sim_state(sim, "crack-growth");
+    return G ? crack_growth_step(sim, G, S) : 0;
 }
 /// [j_integral_task7]
 

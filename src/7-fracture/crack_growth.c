@@ -1,0 +1,219 @@
+/**
+ * @file crack_growth.c
+ * @brief When and where a CRAMP tip grows (chapter 7, "Growth"): J
+ *        against G_c, the kink of maximum hoop stress, and the new point
+ *        handed to stages 2-4 as a moved point is.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "checkpoint.h"
+#include "crack_growth.h"
+#include "cracks.h"
+#include "step.h"
+
+/** Degrees to radians. */
+static const double DEGREE = 3.14159265358979323846 / 180.0;
+
+/// [growth_parameters]
+void growth_parameters(const JState *S, const JTip *T, double *J, double *KI,
+                       double *KII)
+{
+    int n = S->set[T->crack].ncontours;
+    *J = *KI = *KII = 0.0;
+    for (int m = 0; m < n; m++) {
+        *J += T->J[m] / n;
+        *KI += T->KI[m] / n;
+        *KII += T->KII[m] / n;
+    }
+}
+/// [growth_parameters]
+
+/** Does (x, y) lie in a body of the scene? */
+static int in_a_body(const Scene *sc, double x, double y)
+{
+    for (int b = 0; b < sc->nbodies; b++)
+        if (shape_contains(&sc->bodies[b].shape, x, y))
+            return 1;
+    return 0;
+}
+
+/** Does the square of @p cells cells about (x, y) lie in the grid? */
+static int domain_in_grid(const Grid *g, double x, double y, int cells)
+{
+    double hx = cells * g->dx, hy = cells * g->dy;
+    return x - hx >= g->ox && x + hx <= g->ox + g->ncx * g->dx &&
+           y - hy >= g->oy && y + hy <= g->oy + g->ncy * g->dy;
+}
+
+/// [grow_tip]
+/** Add a point at tip @p T of crack @p c: @p len along the tip's
+ *  direction turned by @p theta towards its left normal. The first point
+ *  grows by shifting the points up one place (the room is reserved, and
+ *  the crack keeps its direction, so its sides keep their names). */
+static void grow_tip(Crack *c, const JTip *T, double theta, double len)
+{
+    double ct = cos(theta), st = sin(theta);
+    double x = T->x + len * (ct * T->ex - st * T->ey);
+    double y = T->y + len * (st * T->ex + ct * T->ey);
+    if (T->end) {
+        c->x[c->n] = x;
+        c->y[c->n] = y;
+    } else {
+        memmove(c->x + 1, c->x, sizeof(double) * (size_t)c->n);
+        memmove(c->y + 1, c->y, sizeof(double) * (size_t)c->n);
+        c->x[0] = x;
+        c->y[0] = y;
+    }
+    c->n++;
+    crack_extent(c);
+}
+/// [grow_tip]
+
+/// [crack_growth_step]
+int crack_growth_step(Sim *sim, CrackGrowth *G, JState *S)
+{
+    Cracks *C = cracks_of(sim);
+    const Grid *g = &sim->grid;
+    int grown = 0;
+    for (int t = 0; t < S->ntips; t++) {
+        const JTip *T = &S->tip[t];
+        if (T->crack >= G->ncracks || !G->set[T->crack].on)
+            continue;
+        const GrowthSettings *s = &G->set[T->crack];
+        GrowthEnd *e = &G->end[2 * T->crack + T->end];
+        Crack *c = &C->crack[T->crack];
+        double J, KI, KII;
+        growth_parameters(S, T, &J, &KI, &KII);
+        if (e->through)
+            continue;
+        if (s->average > 0.0) {             /* the block's means decide */
+            e->Jsum += J;
+            e->Ksum[0] += KI;
+            e->Ksum[1] += KII;
+            e->nsum++;
+            if (e->nsum * S->every * sim->dt < s->average)
+                continue;
+            J = e->Jsum / e->nsum;
+            KI = e->Ksum[0] / e->nsum;
+            KII = e->Ksum[1] / e->nsum;
+            e->Jsum = e->Ksum[0] = e->Ksum[1] = 0.0;
+            e->nsum = 0;
+        }
+        if (!(J >= s->G_c))
+            continue;                       /* when: J reaches G_c */
+        if (c->n - 1 >= s->max_segments)
+            return step_fail(sim, -1, s->full, s->max_segments);
+        double theta = hoop_angle(KI, KII); /* where: the largest hoop stress */
+        grow_tip(c, T, theta, s->length);
+        int i = T->end ? c->n - 1 : 0;
+        if (!(c->x[i] >= g->ox && c->x[i] < g->ox + g->ncx * g->dx &&
+              c->y[i] >= g->oy && c->y[i] < g->oy + g->ncy * g->dy))
+            return step_fail(sim, -1, "crack point (grew out of the grid)",
+                             c->x[i]);
+        int widest = 0, out = !in_a_body(&sim->scene, c->x[i], c->y[i]);
+        for (int m = 0; m < S->set[T->crack].ncontours; m++)
+            widest = S->set[T->crack].contour[m] > widest
+                         ? S->set[T->crack].contour[m] : widest;
+        if (!out && !domain_in_grid(g, c->x[i], c->y[i], widest))
+            return step_fail(sim, -1, "crack tip (its J domain grew out of "
+                             "the grid)", c->x[i]);
+        e->events++;
+        e->last_step = sim->step + 1;
+        e->J = J;
+        e->theta = theta;
+        e->through = out;                   /* cut through: no more growth */
+        grown = 1;
+    }
+    if (!grown)
+        return 0;
+    /* as after Task 7's motion: the search and the J tips follow */
+    if (C->search->update && C->search->update(C, &sim->grid))
+        return step_fail(sim, -1, "memory for the crossing search", 0);
+    j_integral_tips(sim, S);
+    return 0;
+}
+/// [crack_growth_step]
+
+/** The J tips (found at set-up: a crack's ends inside a body). */
+static const JState *j_tips(const Sim *sim)
+{
+    return sim_state(sim, "j-integral");
+}
+
+int crack_growth_history(const Sim *sim, void *state, FILE *f, int header)
+{
+    const CrackGrowth *G = state;
+    const JState *S = j_tips(sim);
+    for (int t = 0; S && t < S->ntips; t++) {
+        const JTip *T = &S->tip[t];
+        if (T->crack >= G->ncracks || !G->set[T->crack].on)
+            continue;
+        const GrowthEnd *e = &G->end[2 * T->crack + T->end];
+        const char *name = T->end ? "last" : "first";
+        int k = T->crack;
+        int rc = header ? fprintf(f, ",events_crack%d_%s,tipx_crack%d_%s,"
+                                  "tipy_crack%d_%s", k, name, k, name, k, name)
+                        : fprintf(f, ",%ld,%.9g,%.9g", e->events, T->x, T->y);
+        if (rc < 0)
+            return -1;
+    }
+    return 0;
+}
+
+int crack_growth_report(const Sim *sim, void *state, FILE *f)
+{
+    const CrackGrowth *G = state;
+    const JState *S = j_tips(sim);
+    const Units *u = sim->scene.run.units;
+    for (int t = 0; S && t < S->ntips; t++) {
+        const JTip *T = &S->tip[t];
+        if (T->crack >= G->ncracks || !G->set[T->crack].on)
+            continue;
+        const GrowthSettings *s = &G->set[T->crack];
+        const GrowthEnd *e = &G->end[2 * T->crack + T->end];
+        if (fprintf(f, "mpm: crack growth, crack %d, %s point: %ld segments "
+                    "of %g %s added, tip now (%.6g, %.6g)%s", T->crack,
+                    T->end ? "last" : "first", e->events, s->length, u->length,
+                    T->x, T->y, e->through ? ", through the body" : "") < 0)
+            return -1;
+        if (e->events &&
+            fprintf(f, "; the latest after step %ld, J %.6g %s/%s^2 (G_c %g), "
+                    "kink %.3g degrees", e->last_step, e->J, u->energy,
+                    u->length, s->G_c, e->theta / DEGREE) < 0)
+            return -1;
+        if (fputc('\n', f) == EOF)
+            return -1;
+    }
+    return 0;
+}
+
+/// [crack_growth_checkpoint]
+int crack_growth_checkpoint(Sim *sim, void *state, FILE *f, int save)
+{
+    CrackGrowth *G = state;
+    Cracks *C = cracks_of(sim);
+    int n = G->ncracks, m = n;
+    if (checkpoint_io(f, &m, sizeof m, save) || m != n)
+        return -1;
+    for (int k = 0; k < 2 * n; k++) {
+        GrowthEnd *e = &G->end[k];
+        if (checkpoint_io(f, &e->events, sizeof e->events, save) ||
+            checkpoint_io(f, &e->last_step, sizeof e->last_step, save) ||
+            checkpoint_io(f, &e->J, sizeof e->J, save) ||
+            checkpoint_io(f, &e->theta, sizeof e->theta, save) ||
+            checkpoint_io(f, &e->through, sizeof e->through, save) ||
+            checkpoint_io(f, &e->Jsum, sizeof e->Jsum, save) ||
+            checkpoint_io(f, e->Ksum, sizeof e->Ksum, save) ||
+            checkpoint_io(f, &e->nsum, sizeof e->nsum, save))
+            return -1;
+    }
+    /* stage 2 restored the points (a grown crack with exactly as many
+       as it had): the room for more is reserved again */
+    for (int k = 0; !save && k < n && k < C->ncracks; k++)
+        if (G->set[k].on &&
+            crack_reserve_points(&C->crack[k], G->set[k].max_segments + 1))
+            return -1;
+    return 0;
+}
+/// [crack_growth_checkpoint]
