@@ -30,16 +30,20 @@ typedef struct Cohesive {
     CohesiveSettings *set;   /**< per crack (on = 0: traction-free) */
     int npt;                 /**< quadrature points along the cracks */
     int *crack;              /**< crack of each point */
-    double *px, *py;         /**< where */
+    double *px;              /**< where: x */
+    double *py;              /**< where: y */
     double *w;               /**< weight: length x thickness */
-    double *tx, *ty;         /**< unit tangent (the segment's direction);
-                                  the normal (-ty, tx) points to side +1 */
+    double *tx;              /**< unit tangent (the segment's direction):
+                                  x; the normal (-ty, tx) points to side +1 */
+    double *ty;              /**< unit tangent: y */
     ShapeRows jump;          /**< per point: the parameters whose function
                                   jumps there and the jump, N = Phi_I
                                   (E+ - E-): [[u]] = sum N u_q */
     double *dmax;            /**< history: largest effective opening */
-    double *dn, *ds;         /**< normal and sliding opening now */
-    double *tn, *ts;         /**< normal and shear traction now */
+    double *dn;              /**< normal opening now */
+    double *ds;              /**< sliding opening now */
+    double *tn;              /**< normal traction now */
+    double *ts;              /**< shear traction now */
     double *stored;          /**< elastic energy per area now */
 } Cohesive;
 /// [cohesive_state]

@@ -11,7 +11,7 @@
  * curve, elastic branch included, is G_f. As K grows it becomes the
  * extrinsic law of xefg.md 2.3, t = f_t (1 - delta / delta_c) or
  * t = f_t exp(-f_t delta / G_f). The opening is the effective one,
- * delta = sqrt(<delta_n>^2 + beta^2 delta_s^2) (beta = 0: normal opening
+ * delta = sqrt(max(delta_n, 0)^2 + beta^2 delta_s^2) (beta = 0: normal opening
  * alone); a history variable delta_max gives secant unloading to the
  * origin; a closing face (delta_n < 0) is pushed back by the penalty K.
  */
@@ -68,9 +68,9 @@ double cohesive_dissipated(const CohesiveLaw *L, double dmax);
  * @brief The tractions for the normal and sliding openings @p dn, @p ds
  *        and the history *@p dmax (raised to the effective opening when it
  *        is passed, when @p commit): secant stiffness k = t(dmax) / dmax
- *        (K before softening), t_n = k <dn> + K min(dn, 0),
+ *        (K before softening), t_n = k max(dn, 0) + K min(dn, 0),
  *        t_s = beta^2 k ds, the gradient of the stored energy
- *        k (<dn>^2 + beta^2 ds^2) / 2 + K min(dn, 0)^2 / 2.
+ *        k (max(dn, 0)^2 + beta^2 ds^2) / 2 + K min(dn, 0)^2 / 2.
  */
 CohesiveState cohesive_traction(const CohesiveLaw *L, double dn, double ds,
                                 double *dmax, int commit);
