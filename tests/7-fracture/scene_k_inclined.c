@@ -35,7 +35,8 @@
  * degrees (the discretisation is point-symmetric: only round-off
  * differs), and to 1 % of sigma sqrt(pi a) at 45; each run at rest
  * (kinetic / strain energy <= 1e-6). Cells of a / 8 (domains of 2, 3, 4
- * cells: the same mm) are printed beside them, not bounded.
+ * cells: the same mm) are printed beside them, not bounded; with
+ * K_INCLINED_A32 set in the environment, cells of a / 32 too (minutes).
  * J / J(K) - 1 compares J with (K_I^2 + K_II^2) / E' (printed).
  */
 #include <complex.h>
@@ -286,6 +287,10 @@ static void k_at_both_tips(void **state)
         print_rows(degrees[i], &Rc, gI, gII);
         Result R = inclined_crack(beta, fine);
         print_rows(degrees[i], &R, gI, gII);
+        if (getenv("K_INCLINED_A32")) {   /* a third cell size, minutes */
+            Result Rx = inclined_crack(beta, 2 * fine);
+            print_rows(degrees[i], &Rx, gI, gII);
+        }
         fflush(stdout);
         tk_bound(&bd, 4, R.ratio <= STOP, "beta %g: not at rest (KE/SE %.1e)",
                  degrees[i], R.ratio);
