@@ -15,9 +15,10 @@
  * edges carry the tractions of the infinite plate's exact state
  * (Westergaard's functions, griffith_stress() below), one load per point
  * of the outermost row (traction x h/2), so the finite plate holds
- * Griffith's state and no finite-width correction is needed (a uniform
- * tension on b = 3 a would need Feddersen's sqrt(sec(pi a / 2b)), +6 %,
- * which holds for beta = 0 only). Damped to rest as scene_k_edge.c is.
+ * Griffith's state and no finite-width correction is needed (pulled
+ * uniformly, this plate would need more than Feddersen's
+ * sqrt(sec(pi a / 2b)), +7 % at beta = 0, which is for a long strip; Tada's
+ * handbook). Damped to rest as scene_k_edge.c is.
  *
  * The crack's centre is a cell centre, so that grid, points and loads are
  * point-symmetric about it and the two tips see the same discretisation
@@ -38,6 +39,11 @@
  * cells: the same mm) are printed beside them, not bounded; with
  * K_INCLINED_A32 set in the environment, cells of a / 32 too (minutes).
  * J / J(K) - 1 compares J with (K_I^2 + K_II^2) / E' (printed).
+ * They hold: on a/16 K is -2.1 to +2.1 % of Griffith's (K_I low at 60
+ * deg, where T = sigma (sin^2 - cos^2) beta is +0.5 MPa: chapter 7), the
+ * tips agree to 1e-13 at 30 and 60 and to 0.76 % at 45; on a/32 every K
+ * is within 1.2 %. Red with the mode-II auxiliary field's sign swapped,
+ * and with the first point's x1 turned back along the crack.
  */
 #include <complex.h>
 #include <stdarg.h>
