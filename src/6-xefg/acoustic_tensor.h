@@ -37,11 +37,11 @@
  * df = m : d sigma - H d lambda = 0 with d sigma = C (d eps - d lambda m)
  * gives d lambda = m:C:d eps / (m:C:m + H) and the tangent
  *
- *     C_t = C - (C m) (x) (m C) / (m:C:m + H)       (de Borst, Crisfield,
- *                                                    Remmers, Verhoosel,
- *                                                    "Nonlinear finite
- *                                                    element analysis",
- *                                                    ch. 7)
+ *     C_t = C - (C m) (x) (m C) / (m:C:m + H)
+ *
+ * (the tangent of associated plasticity; de Borst, Crisfield, Remmers and
+ * Verhoosel, "Nonlinear finite element analysis of solids and
+ * structures", the chapter on plasticity).
  *
  * In Voigt form m is strain-like, m = (n1x^2, n1y^2, 2 n1x n1y), so that
  * m . d sigma is m : d sigma and m . C m is m:C:m. For an isotropic C
@@ -56,12 +56,12 @@
  * -h0 < H the minimum is at n = n1, where det Q_t(n1) = mu (lambda + 2 mu)
  * H / (h0 + H): positive for H > 0, negative for -h0 < H < 0. The critical
  * softening modulus of the associated Rankine law is H_crit = 0, for any
- * stress state (Ottosen and Runesson 1991): stability is lost as soon as
- * softening starts, and the critical normal is the first principal stress
- * direction, which is the "sigma_1 >= f_t, normal = n1" rule of
- * xefg.md 2.4. (For H < -h0, a snap-back steeper than the elastic
- * modulus, the formula gives det Q > 0 again: the tangent is meant for
- * -h0 < H.)
+ * stress state (derived here; test_acoustic_tensor checks it): stability
+ * is lost as soon as softening starts, and the critical normal is the
+ * first principal stress direction, which is the "sigma_1 >= f_t,
+ * normal = n1" rule of xefg.md 2.4. (For H < -h0, a snap-back steeper
+ * than the elastic modulus, the formula gives det Q > 0 again: the
+ * tangent is meant for -h0 < H.)
  */
 #ifndef MPM_ACOUSTIC_TENSOR_H
 #define MPM_ACOUSTIC_TENSOR_H
@@ -109,12 +109,17 @@ typedef struct AcousticCritical {
  *        whether stability is lost there (min det Q <= 0).
  *
  * A scan of @p samples equally spaced angles finds the least sample; a
- * golden-section search on the two intervals around it refines the angle
- * to 1e-10 rad. det Q is a trigonometric polynomial of degree 4 in phi
- * (Q is quadratic in (cos phi, sin phi)), so it has at most two minima in
- * [0, pi), and a scan of 1 degree or finer brackets the lower one. Where
- * det Q does not depend on phi (isotropic elasticity) every normal is
- * critical and the angle returned is whichever rounding favours.
+ * golden-section search on the two intervals around it narrows the
+ * bracket to 1e-10 rad. The angle is then as good as the rounding of
+ * det Q allows: about sqrt(eps) rad where det Q is quadratic about its
+ * minimum, eps^(1/4) ~ 1e-4 rad where it is flat to fourth order, as it
+ * is for the Rankine tangent. det Q is a trigonometric polynomial in
+ * 2 phi of degree 2 (Q is quadratic in (cos phi, sin phi)), so it has at
+ * most two minima in [0, pi); a scan of 1 degree lands in the basin of
+ * the lower one unless the two are nearly equal, and then either is a
+ * fair answer. Where det Q does not depend on phi (isotropic elasticity)
+ * every normal is critical and the angle returned is whichever rounding
+ * favours.
  * @param C        the tangent (as acoustic_tensor())
  * @param samples  the scan's angles (ACOUSTIC_SAMPLES; at least 8)
  * @return the critical angle, det Q there and the verdict
