@@ -59,8 +59,10 @@ static double angle_gap(double a, double b)
 static void moduli(double E, double nu, PlaneKind plane, double *P, double *S)
 {
     *S = E / (2.0 * (1.0 + nu));
-    *P = plane == PLANE_STRAIN ? E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu))
-                               : E / (1.0 - nu * nu);
+    if (plane == PLANE_STRAIN)
+        *P = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+    else
+        *P = E / (1.0 - nu * nu);
 }
 
 static const char *plane_name(PlaneKind p)
@@ -103,8 +105,8 @@ static void traction_rule(void **state)
                          Q[0][0] * Q[1][1] - Q[0][1] * Q[1][0], 1e-14 * cmax * cmax);
         }
     }
-    printf("  20 general C x 100 normals: |Q g - sigma(sym(g n)) n| <= %.2e max|C|\n",
-           worst);
+    printf("  20 general C x 100 normals: |Q g - sigma(sym(g n)) n| <= %.2e "
+           "max|C|\n", worst);
 }
 
 static void isotropic_elastic(void **state)
@@ -112,6 +114,9 @@ static void isotropic_elastic(void **state)
     (void)state;
     static const double cases[4][2] = {{1000.0, 0.0}, {30000.0, 0.2},
                                        {1000.0, 0.3}, {200e3, 0.49}};
+    printf("  relative errors over 3600 normals, P = lambda + 2 mu, S = mu:\n"
+           "  plane             E    nu    eig P    eig S   Qn - Pn    det Q"
+           "   search\n");
     for (int p = 0; p < 2; p++) {
         PlaneKind plane = p ? PLANE_STRESS : PLANE_STRAIN;
         for (int c = 0; c < 4; c++) {
@@ -134,16 +139,15 @@ static void isotropic_elastic(void **state)
                 es = fmax(es, fabs(small / S - 1.0));
                 ed = fmax(ed, fabs(det / (P * S) - 1.0));
                 for (int j = 0; j < 2; j++)
-                    en = fmax(en, fabs(Q[j][0] * n[0] + Q[j][1] * n[1] - P * n[j]) / P);
+                    en = fmax(en, fabs(Q[j][0] * n[0] + Q[j][1] * n[1] - P * n[j]) /
+                                      P);
                 dmin = fmin(dmin, det);
             }
             AcousticCritical r = acoustic_critical(C, ACOUSTIC_SAMPLES);
             double ec = fabs(r.det_min / (P * S) - 1.0);
-            printf("  %s E %g nu %.2f: lambda+2mu %.6g, mu %.6g; 3600 normals: "
-                   "eigenvalues %.1e, %.1e rel, Qn %.1e, det %.1e rel; "
-                   "search det_min %.1e rel, %s\n",
-                   plane_name(plane), E, nu, P, S, ep, es, en, ed, ec,
-                   r.unstable ? "UNSTABLE" : "stable");
+            printf("  %-12s %6g  %4.2f %8.1e %8.1e %8.1e %8.1e %8.1e%s\n",
+                   plane_name(plane), E, nu, ep, es, en, ed, ec,
+                   r.unstable ? " UNSTABLE" : "");
             assert_true(ep <= 1e-12 && es <= 1e-12 && en <= 1e-12 && ed <= 1e-12);
             assert_true(dmin > 0.0);
             assert_false(r.unstable);
@@ -186,14 +190,15 @@ static void rankine_direction(void **state)
         moduli(E, nu, plane, &P, &S);
         double lambda = P - 2.0 * S;
         acoustic_elastic_tangent(E, nu, plane, C);
-        printf("  %s, E %g, nu %.1f: h0 = lambda + 2 mu = %.6g, "
-               "mu (lambda + 2 mu) = %.6g\n", plane_name(plane), E, nu, P, P * S);
+        printf("  %s, E %g, nu %.1f: h0 = %.6g, mu h0 = %.6g\n",
+               plane_name(plane), E, nu, P, P * S);
+        printf("  state                       n1 deg  |phi_c - n1| deg  "
+               "det_min    curve\n");
         for (int k = 0; k < 6; k++) {
             double s[3], th = STATES[k].deg * DEG;
             stress_of(k, s);
             assert_true(angle_gap(acoustic_principal_angle(s), th) <= 1e-12);
             double worst_angle = 0.0, worst_det = 0.0, worst_curve = 0.0;
-            printf("    %-27s n1 at %5.1f deg:", STATES[k].name, STATES[k].deg);
             for (int h = 0; h < 5; h++) {
                 double H = ratios[h] * P, Ct[3][3];
                 double h0 = acoustic_rankine_tangent(C, s, H, Ct);
@@ -203,8 +208,6 @@ static void rankine_direction(void **state)
                 double gap = angle_gap(r.phi, th);
                 worst_angle = fmax(worst_angle, gap);
                 worst_det = fmax(worst_det, fabs(r.det_min / want - 1.0));
-                printf(" H/h0 %+.2f: %.4f deg, det %+.4g%s;", ratios[h],
-                       r.phi / DEG, r.det_min, r.unstable ? " (lost)" : "");
                 assert_true(gap <= 0.5 * DEG);
                 assert_int_equal(r.unstable, H < 0.0);
                 assert_true(fabs(r.det_min / want - 1.0) <= 1e-10);
@@ -221,8 +224,18 @@ static void rankine_direction(void **state)
                     assert_true(err <= 1e-10);
                 }
             }
-            printf("\n      worst angle error %.2e deg, det_min %.1e rel, "
-                   "curve %.1e\n", worst_angle / DEG, worst_det, worst_curve);
+            printf("  %-27s %5.1f  %16.2e  %8.1e  %8.1e\n", STATES[k].name,
+                   STATES[k].deg, worst_angle / DEG, worst_det, worst_curve);
+        }
+        /* what the search says at one state (n1 at 30 deg), as H falls */
+        for (int h = 0; h < 5; h++) {
+            double s[3], Ct[3][3];
+            stress_of(2, s);
+            acoustic_rankine_tangent(C, s, ratios[h] * P, Ct);
+            AcousticCritical r = acoustic_critical(Ct, ACOUSTIC_SAMPLES);
+            printf("    uniaxial 30 deg, H/h0 %+.2f: phi_c %.4f deg, "
+                   "min det Q %+.4g%s\n", ratios[h], r.phi / DEG, r.det_min,
+                   r.unstable ? " (lost)" : "");
         }
     }
 }
@@ -245,6 +258,9 @@ static void critical_modulus(void **state)
         double P, S, C[3][3];
         moduli(E, nu, plane, &P, &S);
         acoustic_elastic_tangent(E, nu, plane, C);
+        printf("  %s: H_crit by bisection (derived: 0) and min det Q at H =\n"
+               "  state                        H_crit/h0  +1e-4 h0    -1e-4 h0"
+               "    -2 h0\n", plane_name(plane));
         for (int k = 0; k < 6; k++) {
             /* bisection of the sign change of min det Q over H */
             double lo = -0.5 * P, hi = 0.5 * P;
@@ -259,10 +275,8 @@ static void critical_modulus(void **state)
             double Hc = 0.5 * (lo + hi);
             double up = min_det(C, k, 1e-4 * P), down = min_det(C, k, -1e-4 * P);
             double snap = min_det(C, k, -2.0 * P);
-            if (k == 0 || k == 4)
-                printf("  %s, %s: H_crit = %+.3e h0 (derived 0); min det Q at "
-                       "H = +1e-4 h0: %+.4g, -1e-4 h0: %+.4g, -2 h0: %+.4g\n",
-                       plane_name(plane), STATES[k].name, Hc / P, up, down, snap);
+            printf("  %-27s %+10.2e  %+10.4g  %+10.4g  %+10.4g\n",
+                   STATES[k].name, Hc / P, up, down, snap);
             assert_true(fabs(Hc) <= 1e-6 * P);
             assert_true(up > 0.0);
             assert_true(down < 0.0);
