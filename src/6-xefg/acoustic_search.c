@@ -10,6 +10,29 @@
 
 static const double PI = 3.14159265358979323846;
 
+/** Golden-section search for a minimum of det Q(phi) in [@p a, @p b],
+ *  which must hold one, down to a bracket of 1e-10 rad; the count of
+ *  evaluations goes to *@p evals. */
+static double golden_min(const double C[3][3], double a, double b, int *evals)
+{
+    const double g = 0.5 * (sqrt(5.0) - 1.0);  /* 0.618..., 1/golden ratio */
+    double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    double f1 = acoustic_det(C, x1), f2 = acoustic_det(C, x2);
+    *evals += 2;
+    for (int it = 0; it < 200 && b - a > 1e-10; it++, ++*evals) {
+        if (f1 <= f2) {               /* the minimum lies in [a, x2] */
+            b = x2, x2 = x1, f2 = f1;
+            x1 = b - g * (b - a);
+            f1 = acoustic_det(C, x1);
+        } else {                      /* in [x1, b] */
+            a = x1, x1 = x2, f1 = f2;
+            x2 = a + g * (b - a);
+            f2 = acoustic_det(C, x2);
+        }
+    }
+    return 0.5 * (a + b);
+}
+
 /// [acoustic_critical]
 AcousticCritical acoustic_critical(const double C[3][3], int samples)
 {
@@ -26,27 +49,10 @@ AcousticCritical acoustic_critical(const double C[3][3], int samples)
             best = k, fbest = f;
     }
     AcousticCritical r = {best * h, fbest, 0, samples};
-    /* golden section on [phi_k - h, phi_k + h]: the least sample's two
-     * neighbours are higher, so the bracket holds a minimum (it may reach
-     * below 0 or past pi: det Q is periodic) */
-    const double g = 0.5 * (sqrt(5.0) - 1.0);  /* 0.618..., 1/golden ratio */
-    double a = r.phi - h, b = r.phi + h;
-    double x1 = b - g * (b - a), x2 = a + g * (b - a);
-    double f1 = acoustic_det(C, x1), f2 = acoustic_det(C, x2);
-    r.evaluations += 2;
-    for (int it = 0; it < 200 && b - a > 1e-10; it++) {
-        if (f1 <= f2) {               /* the minimum lies in [a, x2] */
-            b = x2, x2 = x1, f2 = f1;
-            x1 = b - g * (b - a);
-            f1 = acoustic_det(C, x1);
-        } else {                      /* in [x1, b] */
-            a = x1, x1 = x2, f1 = f2;
-            x2 = a + g * (b - a);
-            f2 = acoustic_det(C, x2);
-        }
-        r.evaluations++;
-    }
-    double x = 0.5 * (a + b), f = acoustic_det(C, x);
+    /* the least sample's neighbours are higher, so [phi_k - h, phi_k + h]
+     * holds a minimum (it may reach below 0 or past pi: det Q is periodic) */
+    double x = golden_min(C, r.phi - h, r.phi + h, &r.evaluations);
+    double f = acoustic_det(C, x);
     r.evaluations++;
     if (f < r.det_min) {              /* keep the sample on a plateau */
         x = fmod(x, PI);

@@ -32,10 +32,11 @@
  *
  * **The Rankine tangent.** A criterion f = sigma_1 - f_t(kappa), sigma_1
  * the first (largest) in-plane principal stress with unit direction n1,
- * associated flow d eps_p = d lambda m with m = df/dsigma = n1 (x) n1,
- * kappa = lambda and H = df_t/dkappa < 0 (softening). Consistency
- * df = m : d sigma - H d lambda = 0 with d sigma = C (d eps - d lambda m)
- * gives d lambda = m:C:d eps / (m:C:m + H) and the tangent
+ * associated flow d eps_p = d kappa m with m = df/dsigma = n1 (x) n1,
+ * the multiplier kappa as the history and H = df_t/dkappa < 0
+ * (softening). Consistency df = m : d sigma - H d kappa = 0 with
+ * d sigma = C (d eps - d kappa m) gives d kappa = m:C:d eps / (m:C:m + H)
+ * and the tangent
  *
  *     C_t = C - (C m) (x) (m C) / (m:C:m + H)
  *

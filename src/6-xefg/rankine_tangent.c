@@ -54,7 +54,7 @@ double acoustic_rankine_tangent(const double C[3][3], const double s[3],
     }
     for (int a = 0; a < 3; a++)
         h0 += m[a] * Cm[a];            /* m : C : m */
-    /* d lambda = m C d eps / (h0 + H), d sigma = C (d eps - d lambda m) */
+    /* d kappa = m C d eps / (h0 + H), d sigma = C (d eps - d kappa m) */
     for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++)
             Ct[a][b] = C[a][b] - Cm[a] * mC[b] / (h0 + H);
