@@ -67,6 +67,15 @@ static double brown_srawley(double r)
            30.39 * r * r * r * r;
 }
 
+/** d ln K_I / da of the handbook's K_I = F(a/W) sigma sqrt(pi a) (1/mm):
+ *  a crack longer by da gives K_I higher by this times da. */
+static double dlnK_da(double a)
+{
+    double r = a / WIDTH;
+    double dF = -0.231 + 2 * 10.55 * r - 3 * 21.72 * r * r + 4 * 30.39 * r * r * r;
+    return 0.5 / a + dF / (brown_srawley(r) * WIDTH);
+}
+
 /** Tada's F(a/W) for the same strip. */
 static double tada(double r)
 {
@@ -153,14 +162,18 @@ static Result edge_crack(double a, int n)
     return R;
 }
 
-/** Rows of one run: per domain F, its error, K_II / K_I, J against K. */
+/** Rows of one run: per domain F, its error, K_II / K_I, J against K,
+ *  and da / h: how much longer (in cells) the handbook's crack would
+ *  have to be to give this K_I (the error over d ln K / da). */
 static void print_rows(double r, const Result *R, double F)
 {
+    double h = WIDTH / R->n, slope = dlnK_da(r * WIDTH);
     for (int k = 0; k < R->nd; k++)
         printf("    %4.2f   W/%-3d %2d (%4.2f mm)  %.5f  %+6.2f %%  %+9.2e  %+6.2f %%"
-               "   %5ld  %.1e  %.0e  %4.1f s\n", r, R->n, R->cells[k],
+               "  %+5.2f   %5ld  %.1e  %.0e  %4.1f s\n", r, R->n, R->cells[k],
                R->cells[k] * WIDTH / R->n, R->F[k], 100 * (R->F[k] / F - 1.0),
-               R->KII[k], 100 * R->JK[k], R->steps, R->ratio, R->drift, R->seconds);
+               R->KII[k], 100 * R->JK[k], log(R->F[k] / F) / slope / h,
+               R->steps, R->ratio, R->drift, R->seconds);
 }
 
 static void k_of_an_edge_crack(void **state)
@@ -176,7 +189,7 @@ static void k_of_an_edge_crack(void **state)
     printf("  CRAMP (errors against Brown-Srawley; J/J(K) - 1: J against "
            "(K_I^2 + K_II^2) / E'):\n");
     printf("    a/W    cells  domain         F        error    K_II/K_I   "
-           "J/J(K)-1  steps  KE/SE    dSE    time\n");
+           "J/J(K)-1   da/h  steps  KE/SE    dSE    time\n");
     for (int i = 0; i < 3; i++) {
         double r = ratios[i], F = brown_srawley(r);
         Result Rc = edge_crack(r * WIDTH, coarse);
