@@ -136,6 +136,26 @@ else
 fi
 
 echo
+# the share of a run that is not its time loop (set-up, and the final
+# points written), by output format: 200 steps of the 200k disks (musl)
+printf 'set-up and output, 200 steps of the 200k disks (musl), by run.output:\n'
+read -r npts dt nx ny < <(header tools/bench/disks_200k.cfg)
+time200=$(awk -v dt="$dt" 'BEGIN { printf "%.17g", 199.5 * dt }')
+for fmt in ascii binary; do
+    t0=$(date +%s.%N)
+    if ! $PIN $MPM tools/bench/disks_200k.cfg -q -o "$WORK/fmt" run.update=musl \
+            run.time="$time200" run.output="\"$fmt\"" >"$WORK/out" 2>"$WORK/err"; then
+        printf '  %-6s failed: %s\n' "$fmt" "$(tail -1 "$WORK/err")"
+        continue
+    fi
+    t1=$(date +%s.%N)
+    loop=$(sed -nE 's/.*steps in ([0-9.]+) s.*/\1/p' "$WORK/out")
+    awk -v a="$t0" -v b="$t1" -v l="$loop" -v f="$fmt" 'BEGIN {
+        w = b - a; printf "  %-6s run %.2f s, time loop %.2f s: %.1f %% outside the loop\n",
+        f, w, l, 100 * (w - l) / w }'
+done
+
+echo
 r=${RATE[200k.musl]:-}
 printf 'goal: >= %g particle-steps/s on one thread at 200k points; <= %d bytes/point\n' \
     "$GOAL_RATE" "$GOAL_BYTES"

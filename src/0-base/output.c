@@ -11,6 +11,7 @@
 
 #include "outfile.h"
 #include "step.h"
+#include "vtu_binary.h"
 
 /** mkdir that is content when a directory of that name is there. */
 static int make_one_dir(const char *path)
@@ -107,10 +108,36 @@ static void vtu_int(FILE *f, const char *name, const int *a, int n)
     fprintf(f, "</DataArray>\n");
 }
 
+/** The points as binary .vtu (run.output = "binary"), into @p name. */
+static int write_vtu_binary(const Sim *sim, const char *dir, const char *name)
+{
+    const Particles *P = &sim->pts;
+    const VtuArray a[] = {
+        {"velocity", 3, P->vx, P->vy, NULL}, {"sigma_xx", 1, P->sxx, NULL, NULL},
+        {"sigma_yy", 1, P->syy, NULL, NULL}, {"sigma_xy", 1, P->sxy, NULL, NULL},
+        {"eps_xx", 1, P->exx, NULL, NULL},   {"eps_yy", 1, P->eyy, NULL, NULL},
+        {"eps_xy", 1, P->exy, NULL, NULL},   {"mass", 1, P->m, NULL, NULL},
+        {"material", 1, NULL, NULL, P->mat}, {"body", 1, NULL, NULL, P->body}};
+    OutFile o;
+    if (outfile_open(&o, dir, "%s", name))
+        return -1;
+    if (vtu_binary_write(o.f, sim->t, sim->step, P->n, P->x, P->y, a,
+                         (int)(sizeof a / sizeof a[0]), "sigma_xx", "velocity")) {
+        outfile_abandon(&o);
+        return -1;
+    }
+    return outfile_commit(&o);
+}
+
 /// [write_vtu]
 static int write_vtu(const Sim *sim, const char *dir, int index)
 {
     const Particles *P = &sim->pts;
+    if (sim->scene.run.binary) {
+        char name[40];
+        snprintf(name, sizeof name, "particles_%05d.vtu", index);
+        return write_vtu_binary(sim, dir, name);
+    }
     OutFile o;
     if (outfile_open(&o, dir, "particles_%05d.vtu", index))
         return -1;
@@ -157,6 +184,39 @@ static int write_vtu(const Sim *sim, const char *dir, int index)
 }
 /// [write_vtu]
 
+/** The nodes that carry mass, as binary .vtu: the grid's scratch arrays
+ *  (free between steps) are packed in place, node order kept. */
+static int write_grid_binary(Sim *sim, const char *dir, const char *name)
+{
+    Grid *g = &sim->grid;
+    int k = 0;
+    for (int n = 0; n < g->nnodes; n++) {
+        if (g->m[n] <= 0)
+            continue;
+        double im = 1.0 / g->m[n];
+        g->vx[k] = grid_node_x(g, n);
+        g->vy[k] = grid_node_y(g, n);
+        g->ax[k] = g->fx[n] * im;                  /* k <= n: in place */
+        g->ay[k] = g->fy[n] * im;
+        g->px[k] = g->px[n] * im;
+        g->m[k++] = g->m[n];
+    }
+    const VtuArray a[] = {{"mass", 1, g->m, NULL, NULL},
+        {"sigma_xx", 1, g->ax, NULL, NULL}, {"sigma_yy", 1, g->ay, NULL, NULL},
+        {"sigma_xy", 1, g->px, NULL, NULL}};
+    OutFile o;
+    int rc = outfile_open(&o, dir, "%s", name);
+    if (rc == 0 && vtu_binary_write(o.f, sim->t, sim->step, k, g->vx, g->vy, a,
+                                    4, "sigma_xx", NULL)) {
+        outfile_abandon(&o);
+        rc = -1;
+    } else if (rc == 0) {
+        rc = outfile_commit(&o);
+    }
+    grid_clear(g);
+    return rc;
+}
+
 int output_grid_csv(Sim *sim, const char *dir, const char *name)
 {
     Grid *g = &sim->grid;
@@ -179,6 +239,8 @@ int output_grid_csv(Sim *sim, const char *dir, const char *name)
             g->px[n] += w * P->sxy[p];
         }
     }
+    if (sim->scene.run.binary)
+        return write_grid_binary(sim, dir, name);
     OutFile o;
     if (outfile_open(&o, dir, "%s", name)) {
         grid_clear(g);
@@ -198,6 +260,13 @@ int output_grid_csv(Sim *sim, const char *dir, const char *name)
     }
     grid_clear(g);
     return outfile_commit(&o);
+}
+
+int output_points_final(const Sim *sim, const char *dir)
+{
+    return sim->scene.run.binary
+               ? write_vtu_binary(sim, dir, "particles_final.vtu")
+               : output_points_csv(sim, dir, "particles_final.csv");
 }
 
 int output_points_csv(const Sim *sim, const char *dir, const char *name)
@@ -238,7 +307,8 @@ int output_series(const Sim *sim, const char *dir, const char *name,
 int output_snapshot(Sim *sim, const char *dir, int index, const double *times)
 {
     char name[32];
-    snprintf(name, sizeof name, "grid_%05d.csv", index);
+    snprintf(name, sizeof name, "grid_%05d.%s", index,
+             sim->scene.run.binary ? "vtu" : "csv");
     if (write_vtu(sim, dir, index) || output_grid_csv(sim, dir, name))
         return -1;
     const SeamList *l = &sim->hooks.seam[SEAM_SNAPSHOT];
@@ -246,6 +316,9 @@ int output_snapshot(Sim *sim, const char *dir, int index, const double *times)
         if (l->at[k].fn.snapshot(sim, l->at[k].state, dir, index, times))
             return -1;
     /* rewrite the series so that it is complete after every snapshot */
+    if (sim->scene.run.binary &&
+        output_series(sim, dir, "grid.pvd", "grid", "vtu", index, times))
+        return -1;
     return output_series(sim, dir, "particles.pvd", "particles", "vtu", index,
                          times);
 }

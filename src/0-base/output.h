@@ -62,8 +62,14 @@ int output_series(const Sim *sim, const char *dir, const char *name,
  *         after a message naming the file. */
 int output_points_csv(const Sim *sim, const char *dir, const char *name);
 
+/** @brief The points at the end of a run (or a stop): particles_final.csv,
+ *         or particles_final.vtu with run.output = "binary". @return 0, or
+ *         -1 after a message naming the file. */
+int output_points_final(const Sim *sim, const char *dir);
+
 /** @brief Extrapolate point stresses to the grid nodes (mass-weighted, as
- *         momenta are) and write x, y, mass, sigma to @p dir/@p name.
+ *         momenta are) and write x, y, mass, sigma to @p dir/@p name (CSV;
+ *         with run.output = "binary" a .vtu of the nodes that carry mass).
  *         @return 0, or -1 after a message naming the file. */
 int output_grid_csv(Sim *sim, const char *dir, const char *name);
 

@@ -187,7 +187,7 @@ static int save_checkpoint(Sim *sim, RunProgress *rp, const History *h,
 static int run_stopped(Sim *sim, RunProgress *rp, const History *h,
                        const char *dir, int signo)
 {
-    int bad = output_points_csv(sim, dir, "particles_final.csv") ||
+    int bad = output_points_final(sim, dir) ||
               save_checkpoint(sim, rp, h, dir);
     fprintf(stderr, "mpm: %s after step %ld of %ld (t = %.6g %s)%s\n",
             signo == SIGINT ? "interrupted (SIGINT)" :
@@ -197,8 +197,8 @@ static int run_stopped(Sim *sim, RunProgress *rp, const History *h,
             bad ? "; the state could not be saved" : "");
     if (bad)
         return 2;
-    fprintf(stderr, "mpm: points in %s/particles_final.csv; go on with: "
-            "mpm --restart %s\n", dir, dir);
+    fprintf(stderr, "mpm: points in %s/particles_final.%s; go on with: "
+            "mpm --restart %s\n", dir, sim->scene.run.binary ? "vtu" : "csv", dir);
     return signo ? 128 + signo : 0;
 }
 
@@ -275,7 +275,7 @@ int sim_run(Sim *sim, const char *outdir, const RunOptions *opt)
         fputc('\n', stderr);
     if (history_close(&h) && (rc == 0 || rc == -1))
         rc = 2;
-    if (rc == 0 && output_points_csv(sim, outdir, "particles_final.csv"))
+    if (rc == 0 && output_points_final(sim, outdir))
         rc = 2;
     if (rc == 2)
         fprintf(stderr, "mpm: stopped: output in %s is incomplete\n", outdir);

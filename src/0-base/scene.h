@@ -126,6 +126,8 @@ typedef struct RunSettings {
     const Units *units; /**< the scene's unit system (run.units) */
     int full_precision; /**< write 17 significant digits (run.precision =
                              "full"); 0: the usual 9 to 12 */
+    int binary;         /**< snapshots and the final points as binary .vtu
+                             (run.output = "binary"); 0: text ("ascii") */
     int objective;      /**< rotate stress and strain by each increment's
                              spin (run.stress_rate = "jaumann"); 0: the
                              paper's eq. 35-36, unrotated */

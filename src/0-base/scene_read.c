@@ -413,6 +413,7 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
     double gr[2] = {0, 0}, snaps, hist, ckpt;
     const char *update = "musl", *plane = "stress", *method = "mpm";
     const char *rate = "unrotated", *precision = "usual", *units = "mm-g-ms";
+    const char *output = "ascii";
     if (!g ||
         scene_check_open_keys(r, &sim->hooks, "run", g, scene_run_keys, NULL) ||
         scene_number(r, g, "time", 1, 0, &run->time) < 0 ||
@@ -428,7 +429,8 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         scene_string(r, g, "plane", 0, &plane) < 0 ||
         scene_string(r, g, "stress_rate", 0, &rate) < 0 ||
         scene_string(r, g, "precision", 0, &precision) < 0 ||
-        scene_string(r, g, "units", 0, &units) < 0)
+        scene_string(r, g, "units", 0, &units) < 0 ||
+        scene_string(r, g, "output", 0, &output) < 0)
         return -1;
     run->units = units_find(units);
     if (!run->units)
@@ -441,6 +443,14 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         return scene_error(r, config_setting_get_member(g, "precision"),
                            "precision", "\"%s\": expected \"usual\" (10 "
                            "significant digits) or \"full\" (17)", precision);
+    if (strcmp(output, "ascii") == 0 || strcmp(output, "binary") == 0)
+        run->binary = output[0] == 'b';
+    else
+        return scene_error(r, config_setting_get_member(g, "output"),
+                           "output", "\"%s\": expected \"ascii\" (text: "
+                           "particles_NNNNN.vtu, grid_NNNNN.csv and "
+                           "particles_final.csv) or \"binary\" (binary "
+                           ".vtu for all three)", output);
     if (scene_choice(r, &sim->hooks, g, "run", "method", method,
                      (const void **)&run->method))
         return -1;
