@@ -23,8 +23,10 @@ int energy_balance_prepare(Sim *sim, void *state, char *err, size_t errlen)
 {
     (void)state;
     const Scene *sc = &sim->scene;
-    if (sc->run.method && sc->run.method->step != sim_step)
-        return 0;           /* the account follows the MPM step's Tasks */
+    unsigned needs = SEAM_BIT(SEAM_TASK4_CONTACT) | SEAM_BIT(SEAM_TASK7);
+    if (sc->run.method && (sc->run.method->seams & needs) != needs)
+        return 0;           /* the account follows the step through its
+                               seams: a method without them keeps its own */
     EnergyBalance *B = calloc(1, sizeof *B);
     if (!B || sim_attach(sim, "energy balance", B, energy_balance_release)) {
         free(B);
