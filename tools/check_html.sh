@@ -11,7 +11,8 @@
 #   - raw markup in a page's text: a Doxygen command that did not run
 #     (\section, \subpage, \verbatim, \ref, \image, ... in either @ or \
 #     form; \f$, \f[, \f] of a formula) or an HTML table shown as text
-#     (&lt;table), or a backquote that did not make inline code (a span
+#     (&lt;table), an escaped inline tag (&lt;tt&gt;: a code span in a
+#     heading), or a backquote that did not make inline code (a span
 #     split over lines, or one that starts with a quote). Code blocks are skipped (<pre> and the lines of a
 #     <div class="fragment">: they quote files and output as they are);
 #     inline code is not (the book shows no Doxygen syntax as code, and a
@@ -90,7 +91,7 @@ fi
 for f in "$HTML"/*.html; do
     perl -0777 -ne 's/<script\b.*?<\/script>|<!--.*?-->|<pre\b.*?<\/pre>|<div class="line">.*?<\/div>//gs;
         s/<[^>]*>//g; s/\s+/ /g;
-        while (/\\f\$.*?\\f\$|\\f\[.*?\\f\]|\\f[\$\[\]]|&lt;table|`|[\\@](?:section|subsection|subsubsection|page|subpage|mainpage|ref|verbatim|endverbatim|code|endcode|snippet|image)\b/g) {
+        while (/\\f\$.*?\\f\$|\\f\[.*?\\f\]|\\f[\$\[\]]|&lt;table|&lt;\/?(?:tt|code|em|b|i|strong)&gt;|`|[\\@](?:section|subsection|subsubsection|page|subpage|mainpage|ref|verbatim|endverbatim|code|endcode|snippet|image)\b/g) {
             my $at = $-[0] < 30 ? 0 : $-[0] - 30; print substr($_, $at, 80), "\n" }' "$f" |
         while IFS= read -r l; do bad "${f#"$HTML"/}: raw markup in the text: ...$l..."; done
 done
