@@ -1,0 +1,130 @@
+/**
+ * @file growth_insert.c
+ * @brief One growth event: the crack's line gains a point, and what the
+ *        new segment touches is brought up to date (growth_parameters.c,
+ *        growth_rows.c, growth_cohesive.c); the held places' constraints
+ *        must not be touched; the stable step is computed again only when
+ *        a new parameter is lighter, relative to its node, than any
+ *        enriched parameter was when it was last computed.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "cohesive.h"
+#include "cracks.h"
+#include "growth.h"
+
+/** Is (px, py) inside a body with a margin all round (a tip), as
+ *  xefg_build.c decides it? */
+static int inside_a_body(const Scene *sc, double px, double py)
+{
+    double eps = 1e-9 * fmin(sc->dx, sc->dy);
+    for (int b = 0; b < sc->nbodies; b++) {
+        const Shape *s = &sc->bodies[b].shape;
+        if (shape_contains(s, px - eps, py - eps) &&
+            shape_contains(s, px + eps, py - eps) &&
+            shape_contains(s, px - eps, py + eps) &&
+            shape_contains(s, px + eps, py + eps))
+            return 1;
+    }
+    return 0;
+}
+
+/** The held places' rows must be the nodes' rows still: a held node whose
+ *  row gained parameters would change G M^-1 G^T. @return 0 or -1. */
+static int constraints_untouched(const Xefg *x, int c, char *err,
+                                 size_t errlen)
+{
+    for (int k = 0; k < 2; k++) {
+        const Constraints *C = &x->fix[k];
+        for (int j = 0; j < C->n; j++) {
+            int nd = C->node[j];
+            int a = x->at_node.start[nd + 1] - x->at_node.start[nd];
+            if (a == C->rows.start[j + 1] - C->rows.start[j])
+                continue;
+            snprintf(err, errlen, "growth of crack %d stopped: it came within "
+                     "two supports of the place held along %c at (%g, %g), "
+                     "whose constraint would change (not done: hold places "
+                     "farther from the crack's path)", c, "xy"[k], x->X[nd],
+                     x->Y[nd]);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/// [growth_stable_step]
+/** The stable step again, by the power iteration in the room kept for it,
+ *  when a new parameter is lighter relative to its node's standard one
+ *  than any enriched one was; a lower step lowers the run's step. */
+static int stable_step(Sim *sim, Xefg *x, Growth *g, char *err, size_t errlen)
+{
+    double lightest = INFINITY;
+    for (int I = 0; I < x->nnode; I++)
+        for (int q = x->node_dof[I + 1] - g->add[I]; q < x->node_dof[I + 1]; q++)
+            lightest = fmin(lightest, x->mass[q] / x->mass[x->node_dof[I]]);
+    if (!(lightest < g->min_ratio))
+        return 0;                            /* no lighter parameter: kept */
+    g->min_ratio = lightest;
+    g->power_runs++;
+    if (xefg_power_iteration_in(x, sim, g->zs, g->kzs, g->gss)) {
+        snprintf(err, errlen, "growth: the power iteration gave no finite "
+                 "frequency (highest %g)", x->omega_max);
+        return -1;
+    }
+    double dt = sim->scene.run.cfl * x->stable_step;
+    if (dt < sim->dt) {                      /* the rest of the run, finer */
+        sim->dt = dt;
+        sim->nsteps = sim->step +
+                      (long)ceil((sim->scene.run.time - sim->t) / dt - 1e-9);
+    }
+    return 0;
+}
+/// [growth_stable_step]
+
+/// [growth_insert]
+int growth_insert(Sim *sim, Xefg *x, Growth *g, int c, int end, double px,
+                  double py, char *err, size_t errlen)
+{
+    CrackLine *l = &x->crack[c];
+    Crack *ck = &cracks_of(sim)->crack[c];
+    if (l->n >= g->point_cap[c]) {
+        char at[SCENE_AT_LEN];
+        snprintf(err, errlen, "growth of crack %d stopped: max_segments = %d "
+                 "segments added (%s), the room reserved at set-up", c,
+                 g->set[c].max_segments,
+                 scene_lines_at(sim->scene.lines, sim->scene.file,
+                                g->set[c].line, at, SCENE_AT_LEN));
+        return -1;
+    }
+    double a[2], dir[2], b[2] = {px, py};
+    crack_line_tip(l, end, a, dir);
+    if (end == 1) {                          /* the line, one point longer */
+        ck->x[ck->n] = px;
+        ck->y[ck->n] = py;
+    } else {
+        memmove(ck->x + 1, ck->x, sizeof(double) * (size_t)ck->n);
+        memmove(ck->y + 1, ck->y, sizeof(double) * (size_t)ck->n);
+        ck->x[0] = px;
+        ck->y[0] = py;
+    }
+    ck->n++;
+    l->n = ck->n;
+    crack_extent(ck);
+    /* a segment that leaves the body ends the growth of that end: the
+     * crack cuts through, and that end is a mouth */
+    l->tip[end] = inside_a_body(&sim->scene, px, py);
+    int seg = end == 1 ? l->n - 2 : 0;
+    if (growth_parameters(x, g, c, a, b, err, errlen) < 0 ||
+        growth_rows(sim, x, g, c, a, b, err, errlen) ||
+        growth_cohesive(sim, x, g, c, seg, a, b, err, errlen) ||
+        constraints_untouched(x, c, err, errlen) ||
+        stable_step(sim, x, g, err, errlen))
+        return -1;
+    /* the bulk's stress acts on the new parameters at once: a(t) again
+     * (with the new segment closed, its traction is zero) */
+    xefg_accelerations(x, sim, sim->t);
+    xefg_to_points(x, sim);
+    return 0;
+}
+/// [growth_insert]
