@@ -54,8 +54,6 @@ typedef struct Growth {
     int nevent;              /**< growth events so far */
     int event_cap;           /**< room for events */
     GrowthEvent *event;      /**< the events */
-    double min_ratio;        /**< smallest m_q / m_I of an enriched parameter
-                                  when the stable step was last computed */
     int power_runs;          /**< power iterations run after set-up */
     char msg[480];           /**< the message that stops a run */
     /* scratch, sized at set-up */
@@ -135,7 +133,7 @@ int growth_after_step(Sim *sim, Xefg *x, Growth *g);
  *        enrichment of the nodes whose supports it meets (new parameters,
  *        zero, mass lumped), the Gauss points and rows near it, the rows
  *        at the nodes, its cohesive points and the jump rows near it, and
- *        the stable step when a new parameter is lighter than any before.
+ *        the stable step (power iteration; the run's step only falls).
  * @return 0, or -1 with a message naming the crack in @p err.
  */
 int growth_insert(Sim *sim, Xefg *x, Growth *g, int c, int end, double px,

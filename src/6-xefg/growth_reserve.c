@@ -215,11 +215,6 @@ int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err, size_t errlen)
         goto oom;
     if (cell_list_build(&g->cl, x->nnode, x->X, x->Y, dmax))
         goto oom;
-    g->min_ratio = 1.0;                  /* the lightest enriched parameter */
-    for (int q = 0; q < x->ndof; q++)
-        if (x->dof_kind[q] != DOF_STANDARD)
-            g->min_ratio = fmin(g->min_ratio,
-                                x->mass[q] / x->mass[x->node_dof[x->dof_node[q]]]);
     return 0;
 oom:
     snprintf(err, errlen, "%s: out of memory for the room of the growing "

@@ -5,6 +5,7 @@
  *        outputs: a history column, the events in the report.
  */
 #include <math.h>
+#include <string.h>
 
 #include "cohesive.h"
 #include "growth.h"
@@ -29,8 +30,11 @@ int growth_after_step(Sim *sim, Xefg *x, Growth *g)
                 continue;
             double len = g->set[k].length;
             double px = tip[0] + len * dir[0], py = tip[1] + len * dir[1];
-            if (growth_insert(sim, x, g, k, e, px, py, g->msg, sizeof g->msg))
+            if (growth_insert(sim, x, g, k, e, px, py, g->msg,
+                              sizeof g->msg - 16)) {
+                strcat(g->msg, "; the crack");    /* " = k" follows */
                 return step_fail(sim, -1, g->msg, (double)k);
+            }
             if (g->nevent < g->event_cap)
                 g->event[g->nevent++] = (GrowthEvent){k, e, sim->step, sim->t,
                                                       s1, tip[0], tip[1], px, py};

@@ -1,0 +1,283 @@
+/**
+ * @file scene_xefg_growth.c
+ * @brief Cohesive XEFG cracks that grow (chapter 6, "Growing cohesive
+ *        cracks"): a bar 10 x 5 mm with an edge crack on its symmetry line
+ *        x = 6, cohesive (f_t = 1 MPa, G_f = 0.05 N/mm) and free to grow,
+ *        pulled apart at its ends (tests/6-xefg/scenes/growth_bar.cfg,
+ *        nodes 0.5 mm apart, the crack between two columns of them).
+ *
+ * Bounds, fixed before the first run:
+ * - mode_i_grows_straight (to t = 0.2294 ms, half way up; the first run
+ *   stopped at 0.2 ms, before the first event, and failed "it grows"):
+ *   it grows; every point of the
+ *   crack within 0.05 h (0.025 mm) of x = 6; the number of segments added
+ *   equals the number of growth events; at every event the averaged
+ *   sigma_1 ahead of the tip that grew (the test's own sum over the Gauss
+ *   points) was below f_t the step before, unless that tip was made that
+ *   step (one segment per tip per step), and reached f_t at the event
+ *   (the event's own record); the energy balance (start + held work =
+ *   kinetic + strain + cohesive stored + dissipated) within 1 % of the
+ *   energy in at every 100th step and right after every event; the step
+ *   the run uses no longer than run.cfl times the stable step that the
+ *   power iteration gives for the grown discretisation (the first run
+ *   failed it, 9.63e-5 > 0.5 x 1.72e-4 ms, when the code ran the power
+ *   iteration only after an event that made a parameter lighter, relative
+ *   to its node, than any before; it runs it after every event now, the
+ *   bound unchanged); every new
+ *   cohesive point closed and never opened right after its event
+ *   (delta_max = 0, t_n = 0).
+ * - edge_stops_growth (to t = 0.6 ms): the crack reaches the top edge
+ *   y = 6 and stops growing: no tip left, no event after it reached the
+ *   edge, the run goes on to its end, balance within 1 %.
+ * - full_stops_the_run: with max_segments = 3 the run stops with a
+ *   diagnostic naming the crack and max_segments, at the fourth event.
+ * - tip_on_a_node: the crack on the node column x = 6.25, its tip on the
+ *   node (6.25, 2.25), segments of one spacing, so that every new tip is
+ *   on a node: the run reaches the edge without instability, every crack
+ *   point within 0.25 h of x = 6.25 (the crack is h / 2 off the bar's
+ *   symmetry line), balance within 1 %.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "cohesive.h"
+#include "cracks.h"
+#include "growth.h"
+#include "testkit.h"
+
+#define SCENE "tests/6-xefg/scenes/growth_bar.cfg"
+
+/** The energy balance error over the energy in. */
+static double balance(const Sim *s)
+{
+    const Xefg *x = xefg_of(s);
+    double in = x->e0 + x->w_held;
+    double err = in - xefg_kinetic_energy(x) - xefg_strain_energy(x, s) -
+                 cohesive_stored_energy(x->coh) -
+                 cohesive_dissipated_energy(x->coh);
+    return fabs(err) / in;
+}
+
+/** The test's own sigma_1 of the stress averaged over the half disk of
+ *  radius @p r ahead of the tip at end @p e of crack 0 (-inf: no tip). */
+static double sigma1_ahead(const Xefg *x, int e, double r)
+{
+    const CrackLine *l = &x->crack[0];
+    if (!l->tip[e])
+        return -INFINITY;
+    int i = e ? l->n - 1 : 0, j = e ? l->n - 2 : 1;
+    double tx = l->x[i], ty = l->y[i];
+    double dx = tx - l->x[j], dy = ty - l->y[j];
+    double s[3] = {0, 0, 0}, w = 0;
+    for (int g = 0; g < x->ngauss; g++) {
+        double px = x->gx[g] - tx, py = x->gy[g] - ty;
+        if (hypot(px, py) <= r && px * dx + py * dy >= 0) {
+            for (int k = 0; k < 3; k++)
+                s[k] += x->gw[g] * x->gs[3 * g + k];
+            w += x->gw[g];
+        }
+    }
+    for (int k = 0; k < 3; k++)
+        s[k] /= w;
+    return 0.5 * (s[0] + s[1]) + hypot(0.5 * (s[0] - s[1]), s[2]);
+}
+
+/** What a run saw. */
+typedef struct Seen {
+    int events;        /**< growth events */
+    int fresh;         /**< of them at a tip made the step before */
+    int early;         /**< of them where sigma_1 was >= f_t the step before
+                            at a tip that was not fresh */
+    int late;          /**< events whose recorded sigma_1 was below f_t */
+    double before_max; /**< largest sigma_1 / f_t the step before an event */
+    double worst;      /**< worst balance error */
+    long after_edge;   /**< events after the crack went through */
+    double xdev;       /**< largest |x - x_line| of a crack point */
+    int open_new;      /**< new cohesive points not closed at insertion */
+} Seen;
+
+/** Step @p s to its end, watching every event. */
+static void watch(Sim *s, double xline, Seen *v)
+{
+    Xefg *x = xefg_of(s);
+    Growth *g = x->grow;
+    const CohesiveLaw *L = &x->coh->set[0].law;
+    memset(v, 0, sizeof *v);
+    long fresh_step = -10;
+    int through = 0;
+    while (s->step < s->nsteps) {
+        double before = sigma1_ahead(x, 1, g->radius);
+        int n0 = g->nevent, npt0 = x->coh->npt;
+        tk_steps(s, 1);
+        if (g->nevent > n0) {
+            const GrowthEvent *ev = &g->event[g->nevent - 1];
+            v->events++;
+            if (through)
+                v->after_edge++;
+            int was_fresh = fresh_step == s->step - 1;
+            const Cohesive *C = x->coh;       /* the new points: closed, */
+            for (int p = npt0; p < C->npt; p++)
+                if (C->dmax[p] != 0.0 || C->tn[p] != 0.0)   /* never opened */
+                    v->open_new++;
+            if (was_fresh)
+                v->fresh++;
+            else if (!(before < L->f_t))
+                v->early++;
+            v->late += !(ev->sigma1 >= L->f_t);
+            v->before_max = fmax(v->before_max, before / L->f_t);
+            fresh_step = s->step;
+            v->worst = fmax(v->worst, balance(s));
+            printf("    event %d at step %ld (t = %.5f ms): (%.4f, %.4f) -> "
+                   "(%.4f, %.4f), sigma_1 %.5f MPa (%.5f the step before%s); "
+                   "%d parameters, %d Gauss points, %d cohesive points; "
+                   "balance error %.2e\n", v->events, s->step, s->t, ev->x0,
+                   ev->y0, ev->x1, ev->y1, ev->sigma1, before,
+                   was_fresh ? ", a tip made then" : "", x->ndof, x->ngauss, x->coh->npt, balance(s));
+        }
+        through = !x->crack[0].tip[0] && !x->crack[0].tip[1];
+        if (s->step % 100 == 0)
+            v->worst = fmax(v->worst, balance(s));
+    }
+    v->worst = fmax(v->worst, balance(s));
+    const CrackLine *l = &x->crack[0];
+    for (int i = 0; i < l->n; i++)
+        v->xdev = fmax(v->xdev, fabs(l->x[i] - xline));
+}
+
+/** The stable step of the grown discretisation against the run's. */
+static void stable_step_holds(Sim *s, TkBounds *b)
+{
+    Xefg *x = xefg_of(s);
+    double used = s->dt, before = x->stable_step;
+    assert_int_equal(xefg_power_iteration(x, s), 0);
+    double cfl = s->scene.run.cfl;
+    printf("    step used %.6g ms; stable step after the growth %.6g ms (kept "
+           "%.6g; %d power iterations during the run); run.cfl x stable "
+           "%.6g\n", used, x->stable_step, before, x->grow->power_runs,
+           cfl * x->stable_step);
+    tk_bound(b, 4, used <= cfl * x->stable_step * (1.0 + 1e-6),
+             "step %.6g above run.cfl x stable step %.6g", used,
+             cfl * x->stable_step);
+}
+
+/** Mode I: the crack grows straight up the symmetry line. */
+static void mode_i_grows_straight(void **state)
+{
+    (void)state;
+    const char *const over[] = {"run.time=0.2294", NULL};
+    Sim *s = tk_load_file(SCENE, over);
+    Xefg *x = xefg_of(s);
+    double h = x->grow->h;
+    int n0 = x->crack[0].n;
+    Seen v;
+    printf("  mode I, averaging radius %g mm = 1.5 h, segments of %g mm:\n",
+           x->grow->radius, x->grow->set[0].length);
+    watch(s, 6.0, &v);
+    TkBounds b = {0, 0};
+    int added = x->crack[0].n - n0;
+    printf("    %d events (%d at a tip made the step before), %d segments "
+           "added; largest sigma_1 / f_t the step before an event %.5f; "
+           "largest |x - 6| %.3g mm (%.3g h); worst balance error %.2e\n",
+           v.events, v.fresh, added, v.before_max, v.xdev, v.xdev / h, v.worst);
+    tk_bound(&b, 4, v.events > 0, "no growth");
+    tk_bound(&b, 4, v.xdev <= 0.05 * h, "crack off the line by %.3g", v.xdev);
+    tk_bound(&b, 4, added == v.events && added == x->grow->nevent,
+             "%d segments for %d events", added, v.events);
+    tk_bound(&b, 4, v.early == 0, "%d events with sigma_1 >= f_t the step "
+             "before", v.early);
+    tk_bound(&b, 4, v.late == 0, "%d events below f_t", v.late);
+    tk_bound(&b, 4, v.worst <= 0.01, "balance off by %.3g", v.worst);
+    tk_bound(&b, 4, v.open_new == 0, "%d new cohesive points not closed",
+             v.open_new);
+    stable_step_holds(s, &b);
+    tk_bounds_finish(&b);
+    tk_free(s);
+}
+
+/** The crack reaches the edge and stops growing. */
+static void edge_stops_growth(void **state)
+{
+    (void)state;
+    const char *const over[] = {"run.time=0.6", NULL};
+    Sim *s = tk_load_file(SCENE, over);
+    Xefg *x = xefg_of(s);
+    Seen v;
+    printf("  to the edge:\n");
+    watch(s, 6.0, &v);
+    const CrackLine *l = &x->crack[0];
+    TkBounds b = {0, 0};
+    printf("    %d events; the crack ends at (%g, %g); tips %d %d; %ld events "
+           "after it went through; t = %g ms of %g; worst balance error "
+           "%.2e\n", v.events, l->x[l->n - 1], l->y[l->n - 1], l->tip[0],
+           l->tip[1], v.after_edge, s->t, s->scene.run.time, v.worst);
+    tk_bound(&b, 4, l->y[l->n - 1] >= 6.0 - 1e-9, "the crack ends inside");
+    tk_bound(&b, 4, !l->tip[0] && !l->tip[1], "a tip is left");
+    tk_bound(&b, 4, v.after_edge == 0, "%ld events after the edge",
+             v.after_edge);
+    tk_bound(&b, 4, s->step == s->nsteps, "the run stopped early");
+    tk_bound(&b, 4, v.worst <= 0.01, "balance off by %.3g", v.worst);
+    tk_bounds_finish(&b);
+    tk_free(s);
+}
+
+/** max_segments reached: the run stops, naming the crack. */
+static void full_stops_the_run(void **state)
+{
+    (void)state;
+    const char *const over[] = {"run.time=0.6",
+                                "cracks.[0].growth.max_segments=3", NULL};
+    Sim *s = tk_load_file(SCENE, over);
+    Xefg *x = xefg_of(s);
+    int rc = 0;
+    while (s->step < s->nsteps && (rc = sim_advance(s)) == 0)
+        ;
+    printf("  max_segments = 3: stopped at step %ld (t = %g ms) with rc %d: "
+           "\"%s = %g\"; %d events\n", s->fail.step, s->t, rc,
+           s->fail.quantity ? s->fail.quantity : "(none)", s->fail.value,
+           x->grow->nevent);
+    assert_true(rc != 0);
+    assert_non_null(s->fail.quantity);
+    assert_non_null(strstr(s->fail.quantity, "growth of crack 0 stopped"));
+    assert_non_null(strstr(s->fail.quantity, "max_segments = 3"));
+    assert_int_equal(x->grow->nevent, 3);
+    tk_free(s);
+}
+
+/** Every new tip on a node. */
+static void tip_on_a_node(void **state)
+{
+    (void)state;
+    const char *const over[] = {"run.time=0.6",
+                                "cracks.[0].points=([6.25, 0.5], [6.25, 2.25])",
+                                NULL};
+    Sim *s = tk_load_file(SCENE, over);
+    Xefg *x = xefg_of(s);
+    double h = x->grow->h;
+    Seen v;
+    printf("  tips on nodes:\n");
+    watch(s, 6.25, &v);
+    const CrackLine *l = &x->crack[0];
+    TkBounds b = {0, 0};
+    printf("    %d events; ends at (%g, %g); largest |x - 6.25| %.3g mm (%.3g "
+           "h); worst balance error %.2e\n", v.events, l->x[l->n - 1],
+           l->y[l->n - 1], v.xdev, v.xdev / h, v.worst);
+    tk_bound(&b, 4, v.events > 0, "no growth");
+    tk_bound(&b, 4, s->step == s->nsteps, "the run stopped early");
+    tk_bound(&b, 4, v.xdev <= 0.25 * h, "crack off the node column by %.3g",
+             v.xdev);
+    tk_bound(&b, 4, v.worst <= 0.01, "balance off by %.3g", v.worst);
+    tk_bounds_finish(&b);
+    tk_free(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(mode_i_grows_straight),
+        cmocka_unit_test(edge_stops_growth),
+        cmocka_unit_test(full_stops_the_run),
+        cmocka_unit_test(tip_on_a_node),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
