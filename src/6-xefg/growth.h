@@ -64,6 +64,7 @@ typedef struct Growth {
     double *diag;            /**< per parameter: int rho E^2 (lumping) */
     double *zs, *kzs, *gss;  /**< the power iteration's vectors */
     QuadPoint *quad;         /**< one cell's quadrature points */
+    QuadWork *qw;            /**< the room of their cutting */
     int quad_cap;            /**< their room */
     ShapeRows row;           /**< one place's row */
     ShapeRows rows;          /**< rows of the nodes and cohesive points

@@ -17,6 +17,9 @@
 /** pi, rounded up: the sizes below are upper bounds. */
 #define PI_UP 3.1416
 
+/** Most cuts (segments and tips) a cell split during a run may have. */
+#define QUAD_CUTS 32
+
 /** "file:line" of a scene line into @p at. */
 static const char *line_at(const Sim *sim, int line, char *at)
 {
@@ -180,8 +183,10 @@ int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err, size_t errlen)
     int per_row = longest_row(&x->gauss) + support * (1 + nb);
     g->dof_cap = x->ndof + events * near_nodes * (1 + nb);
     g->gauss_cap = x->ngauss + events * cut_cells * 24 * n * n + zone_pts;
-    int gauss_ent = x->gauss.len + (events + 1) * zone_pts * per_row;
-    int node_ent = x->at_node.len + events * zone_cells * support * (1 + nb);
+    int gauss_ent = x->gauss.len + (events + 1) * zone_pts * per_row +
+                    ROW_ROOM;
+    int node_ent = x->at_node.len + events * zone_cells * support * (1 + nb) +
+                   ROW_ROOM;
     if (reserve_parameters(x, g->dof_cap) || reserve_gauss(x, g->gauss_cap) ||
         reserve_rows(&x->gauss, g->gauss_cap, gauss_ent, 1) ||
         reserve_rows(&x->at_node, x->nnode, node_ent, 0))
@@ -192,7 +197,8 @@ int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err, size_t errlen)
     int coh_row = longest_row(&coh->jump) + support * (1 + nb);
     if (reserve_cohesive(coh, g->coh_cap) ||
         reserve_rows(&coh->jump, g->coh_cap,
-                     coh->jump.len + events * (coh_new + coh_zone) * coh_row, 0))
+                     coh->jump.len + events * (coh_new + coh_zone) * coh_row +
+                         ROW_ROOM, 0))
         goto oom;
     /* scratch of one event */
     int marks = g->gauss_cap > x->nnode ? g->gauss_cap : x->nnode;
@@ -207,11 +213,12 @@ int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err, size_t errlen)
     g->gss = malloc(3 * sizeof(double) * (size_t)g->gauss_cap);
     g->quad_cap = 256 * n * n;
     g->quad = malloc(sizeof(QuadPoint) * (size_t)g->quad_cap);
+    g->qw = quad_work_new(QUAD_CUTS);
     int rows = zone_cells > coh_zone ? zone_cells : coh_zone;
     if (!g->add || !g->shift || !g->mark || !g->len || !g->diag || !g->zs ||
-        !g->kzs || !g->gss || !g->quad ||
-        reserve_rows(&g->row, 2, 2 * per_row, 1) ||
-        reserve_rows(&g->rows, rows + 2, (rows + 2) * per_row, 0))
+        !g->kzs || !g->gss || !g->quad || !g->qw ||
+        reserve_rows(&g->row, 2, 2 * ROW_ROOM, 1) ||
+        reserve_rows(&g->rows, rows + 2, (rows + 2) * per_row + ROW_ROOM, 0))
         goto oom;
     if (cell_list_build(&g->cl, x->nnode, x->X, x->Y, dmax))
         goto oom;
@@ -230,6 +237,7 @@ void growth_free(Growth *g)
     for (size_t k = 0; k < sizeof a / sizeof a[0]; k++)
         free(a[k]);
     cell_list_free(&g->cl);
+    quad_work_free(g->qw);
     shape_rows_free(&g->row);
     shape_rows_free(&g->rows);
     *g = (Growth){0};

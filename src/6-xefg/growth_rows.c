@@ -181,11 +181,12 @@ static int gauss_points(Sim *sim, Xefg *x, Growth *g, int c, const double a[2],
         if (!cut[I])
             continue;
         const Body *B = &sim->scene.bodies[sim->pts.body[I]];
-        int m = quad_cell(x->crack, x->ncrack, x->X[I] - x->hx[I],
+        int m = quad_cell_in(g->qw, x->crack, x->ncrack, x->X[I] - x->hx[I],
                           x->Y[I] - x->hy[I], x->X[I] + x->hx[I],
                           x->Y[I] + x->hy[I], n, g->quad, g->quad_cap);
         if (m < 0 || m > g->quad_cap)
-            return full(err, errlen, c, "quadrature points of a cell");
+            return full(err, errlen, c, m == -2 ? "cuts of a cell's quadrature"
+                                                : "quadrature points of a cell");
         x->cell_w[I] = 0.0;
         for (int k = 0; k < m; k++) {
             int p = append_point(x, g, sim, I, g->quad[k].x, g->quad[k].y,
