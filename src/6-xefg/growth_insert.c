@@ -2,9 +2,10 @@
  * @file growth_insert.c
  * @brief One growth event: the crack's line gains a point, and what the
  *        new segment touches is brought up to date (growth_parameters.c,
- *        growth_rows.c, growth_cohesive.c); the held places' constraints
- *        must not be touched; the stable step is computed again.
+ *        growth_rows.c, growth_cohesive.c), the held places whose rows
+ *        gained parameters, and the stable step.
  */
+#include <lapacke.h>
 #include <math.h>
 #include <string.h>
 
@@ -28,28 +29,62 @@ static int inside_a_body(const Scene *sc, double px, double py)
     return 0;
 }
 
-/** The held places' rows must be the nodes' rows still: a held node whose
- *  row gained parameters would change G M^-1 G^T. @return 0 or -1. */
-static int constraints_untouched(const Xefg *x, int c, char *err,
-                                 size_t errlen)
+/// [growth_constraints]
+/** The held places whose nodes' rows gained parameters: their rows of G
+ *  again (the nodes' own rows, constraints.c) and G M^-1 G^T assembled and
+ *  factored again, in the room kept at set-up. @return 0 or -1. */
+static int constraints_update(Xefg *x, Growth *g, int c, char *err,
+                              size_t errlen)
 {
+    const ShapeRows *A = &x->at_node;
     for (int k = 0; k < 2; k++) {
-        const Constraints *C = &x->fix[k];
+        Constraints *C = &x->fix[k];
+        int changed = 0;
         for (int j = 0; j < C->n; j++) {
             int nd = C->node[j];
-            int a = x->at_node.start[nd + 1] - x->at_node.start[nd];
-            if (a == C->rows.start[j + 1] - C->rows.start[j])
-                continue;
-            snprintf(err, errlen, "growth of crack %d stopped: it came within "
-                     "two supports of the place held along %c at (%g, %g), "
-                     "whose constraint would change (not done: hold places "
-                     "farther from the crack's path)", c, "xy"[k], x->X[nd],
-                     x->Y[nd]);
+            g->len[j] = A->start[nd + 1] - A->start[nd];
+            changed |= g->len[j] != C->rows.start[j + 1] - C->rows.start[j];
+        }
+        if (!changed)
+            continue;
+        if (growth_rows_expand(&C->rows, g->len, 0)) {
+            snprintf(err, errlen, "growth of crack %d stopped: the rows of the "
+                     "places held along %c reserved at set-up are full", c,
+                     "xy"[k]);
+            return -1;
+        }
+        for (int j = 0; j < C->n; j++)
+            growth_copy_row(&C->rows, j, A, C->node[j]);
+        size_t n = (size_t)C->n;
+        const ShapeRows *G = &C->rows;
+        double *w = g->diag;                    /* M^-1 G^T, a row at a time */
+        for (int q = 0; q < x->ndof; q++)
+            w[q] = 0.0;
+        for (int a = 0; a < C->n; a++) {
+            for (int e = G->start[a]; e < G->start[a + 1]; e++)
+                w[G->dof[e]] = G->N[e] / x->mass[G->dof[e]];
+            for (int b = 0; b < C->n; b++) {
+                double sum = 0.0;
+                for (int e = G->start[b]; e < G->start[b + 1]; e++)
+                    sum += w[G->dof[e]] * G->N[e];
+                C->S[(size_t)a * n + (size_t)b] = sum;
+            }
+            for (int e = G->start[a]; e < G->start[a + 1]; e++)
+                w[G->dof[e]] = 0.0;
+        }
+        /* the symmetric S read column-major, its upper factor U is the
+         * row-major lower factor L = U^T that constraints_apply() solves
+         * with; the _work call allocates nothing */
+        if (LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'U', C->n, C->S, C->n)) {
+            snprintf(err, errlen, "growth of crack %d stopped: the places held "
+                     "along %c give dependent constraints with the new "
+                     "parameters", c, "xy"[k]);
             return -1;
         }
     }
     return 0;
 }
+/// [growth_constraints]
 
 /// [growth_stable_step]
 /** The stable step again, by the power iteration in the room kept for it
@@ -114,7 +149,7 @@ int growth_insert(Sim *sim, Xefg *x, Growth *g, int c, int end, double px,
     if (growth_parameters(x, g, c, a, b, err, errlen) < 0 ||
         growth_rows(sim, x, g, c, a, b, err, errlen) ||
         growth_cohesive(sim, x, g, c, seg, a, b, err, errlen) ||
-        constraints_untouched(x, c, err, errlen) ||
+        constraints_update(x, g, c, err, errlen) ||
         stable_step(sim, x, g, err, errlen))
         return -1;
     /* the bulk's stress acts on the new parameters at once: a(t) again

@@ -191,6 +191,14 @@ int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err, size_t errlen)
         reserve_rows(&x->gauss, g->gauss_cap, gauss_ent, 1) ||
         reserve_rows(&x->at_node, x->nnode, node_ent, 0))
         goto oom;
+    for (int k = 0; k < 2; k++) {               /* the held places' rows */
+        ShapeRows *G = &x->fix[k].rows;
+        if (x->fix[k].n > 0 &&
+            reserve_rows(G, x->fix[k].n, G->len + (x->fix[k].n < near_nodes ?
+                         x->fix[k].n : near_nodes) * support * (1 + nb) *
+                         (events < 4 ? events : 4) + ROW_ROOM, 0))
+            goto oom;
+    }
     int coh_new = ((int)ceil(L / h) + 2) * n;     /* a segment's points */
     int coh_zone = ((int)ceil((L + 4.0 * dmax) / h) + 4) * n;
     g->coh_cap = coh->npt + events * coh_new;

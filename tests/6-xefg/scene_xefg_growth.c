@@ -26,6 +26,13 @@
  *   bound unchanged); every new
  *   cohesive point closed and never opened right after its event
  *   (delta_max = 0, t_n = 0).
+ * - beam_grows_straight (tests/6-xefg/scenes/growth_beam.cfg, a notched
+ *   beam in three-point bending, to t = 1.7 ms): at least two events; the
+ *   crack within 0.05 h of x = 9; segments = events; sigma_1 below f_t the
+ *   step before each event (fresh tips apart) and at f_t at it; balance
+ *   within 1 %; new cohesive points closed; the rows of the places held
+ *   at the top (which the crack comes within 2 d of) kept equal to their
+ *   nodes' rows and holding the crack's parameters; the stable step.
  * - edge_stops_growth (to t = 0.6 ms): the crack reaches the top edge
  *   y = 6 and stops growing: no tip left, no event after it reached the
  *   edge, the run goes on to its end, balance within 1 %.
@@ -47,6 +54,7 @@
 #include "testkit.h"
 
 #define SCENE "tests/6-xefg/scenes/growth_bar.cfg"
+#define BEAM "tests/6-xefg/scenes/growth_beam.cfg"
 
 /** The energy balance error over the energy in. */
 static double balance(const Sim *s)
@@ -104,8 +112,9 @@ static void watch(Sim *s, double xline, Seen *v)
     Growth *g = x->grow;
     const CohesiveLaw *L = &x->coh->set[0].law;
     memset(v, 0, sizeof *v);
-    long fresh_step = -10;
-    int through = 0;
+    long fresh_step = -10, follow = -1;
+    int through = 0, p0 = 0, p1 = 0;
+    double s_event = 0.0;
     while (s->step < s->nsteps) {
         double before = sigma1_ahead(x, 1, g->radius);
         int n0 = g->nevent, npt0 = x->coh->npt;
@@ -134,6 +143,25 @@ static void watch(Sim *s, double xline, Seen *v)
                    "balance error %.2e\n", v->events, s->step, s->t, ev->x0,
                    ev->y0, ev->x1, ev->y1, ev->sigma1, before,
                    was_fresh ? ", a tip made then" : "", x->ndof, x->ngauss, x->coh->npt, balance(s));
+        }
+        if (g->nevent > n0) {             /* follow the new points' traction */
+            follow = s->step + 20;
+            p0 = npt0;
+            p1 = x->coh->npt;
+            s_event = g->event[g->nevent - 1].sigma1;
+        }
+        if (s->step == follow && p1 > p0) {
+            const Cohesive *C = x->coh;
+            double t = 0.0, w = 0.0, d = 0.0;
+            for (int p = p0; p < p1; p++) {
+                t += C->w[p] * C->tn[p];
+                w += C->w[p];
+                d = fmax(d, C->dn[p]);
+            }
+            printf("      20 steps later: the new segment's mean traction %.4f "
+                   "MPa (%.3f of the sigma_1 that grew it), largest opening "
+                   "%.3g mm (delta_0 = f_t / K = %.3g)\n", t / w, t / w / s_event,
+                   d, cohesive_delta0(&C->set[0].law));
         }
         through = !x->crack[0].tip[0] && !x->crack[0].tip[1];
         if (s->step % 100 == 0)
@@ -271,10 +299,58 @@ static void tip_on_a_node(void **state)
     tk_free(s);
 }
 
+/** Mode I in bending: the notched beam, its crack growing gradually up
+ *  the symmetry line, past the held places at the top. */
+static void beam_grows_straight(void **state)
+{
+    (void)state;
+    const char *const over[] = {"run.time=1.7", NULL};
+    Sim *s = tk_load_file(BEAM, over);
+    Xefg *x = xefg_of(s);
+    double h = x->grow->h;
+    int n0 = x->crack[0].n;
+    Seen v;
+    printf("  three-point bending:\n");
+    watch(s, 9.0, &v);
+    TkBounds b = {0, 0};
+    int added = x->crack[0].n - n0, held = 0, consistent = 1;
+    const Constraints *C = &x->fix[1];
+    for (int j = 0; j < C->n; j++) {       /* the rows of the held places */
+        int nd = C->node[j];
+        const ShapeRows *A = &x->at_node, *G = &C->rows;
+        consistent &= A->start[nd + 1] - A->start[nd] ==
+                      G->start[j + 1] - G->start[j];
+        for (int e = G->start[j]; e < G->start[j + 1]; e++)
+            held += x->dof_crack[G->dof[e]] == 0;
+    }
+    const CrackLine *l = &x->crack[0];
+    printf("    %d events, %d segments, tip at (%g, %g); largest sigma_1 / f_t "
+           "the step before an event %.5f; largest |x - 9| %.3g mm (%.3g h); "
+           "%d entries of the crack's parameters in the held places' rows; "
+           "worst balance error %.2e\n", v.events, added, l->x[l->n - 1],
+           l->y[l->n - 1], v.before_max, v.xdev, v.xdev / h, held, v.worst);
+    tk_bound(&b, 4, v.events >= 2, "%d events", v.events);
+    tk_bound(&b, 4, v.xdev <= 0.05 * h, "crack off the line by %.3g", v.xdev);
+    tk_bound(&b, 4, added == v.events, "%d segments for %d events", added,
+             v.events);
+    tk_bound(&b, 4, v.early == 0, "%d events with sigma_1 >= f_t the step "
+             "before", v.early);
+    tk_bound(&b, 4, v.late == 0, "%d events below f_t", v.late);
+    tk_bound(&b, 4, v.worst <= 0.01, "balance off by %.3g", v.worst);
+    tk_bound(&b, 4, v.open_new == 0, "%d new cohesive points not closed",
+             v.open_new);
+    tk_bound(&b, 4, consistent && held > 0, "held rows %s, %d crack entries",
+             consistent ? "kept" : "not kept", held);
+    stable_step_holds(s, &b);
+    tk_bounds_finish(&b);
+    tk_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(mode_i_grows_straight),
+        cmocka_unit_test(beam_grows_straight),
         cmocka_unit_test(edge_stops_growth),
         cmocka_unit_test(full_stops_the_run),
         cmocka_unit_test(tip_on_a_node),
