@@ -28,6 +28,11 @@ static int body_at(const Scene *sc, double px, double py)
  *  @p q at (px, py) on its crack. */
 static double enrichment_jump(const Xefg *x, int q, double px, double py)
 {
+    CrackLine line = xefg_line_of(x, q);         /* the part it knows */
+    double dist;
+    crack_line_side(&line, px, py, &dist);
+    if (dist > 1e-9 * x->hx[x->dof_node[q]])
+        return 0.0;          /* on a later segment: its function is smooth */
     if (x->dof_kind[q] == DOF_STEP)
         return 2.0;                                   /* H = +-1, eq. 3 */
     double Bp[BRANCH_MAX], Bm[BRANCH_MAX];

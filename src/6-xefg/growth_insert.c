@@ -138,6 +138,9 @@ int growth_insert(Sim *sim, Xefg *x, Growth *g, int c, int end, double px,
         memmove(ck->y + 1, ck->y, sizeof(double) * (size_t)ck->n);
         ck->x[0] = px;
         ck->y[0] = py;
+        for (int q = 0; q < x->ndof; q++)     /* their points moved up one */
+            if (x->dof_crack[q] == c)
+                x->dof_line[2 * q]++;
     }
     ck->n++;
     l->n = ck->n;

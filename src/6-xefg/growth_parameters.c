@@ -2,11 +2,13 @@
  * @file growth_parameters.c
  * @brief The enrichment of the nodes a new segment reaches (eq. 1-2 with
  *        the longer crack): a node whose support the crack now cuts
- *        through gains a step parameter, one whose support holds the new
- *        tip gains branch parameters about it. Parameters are only added,
- *        never changed or removed: a branch parameter keeps the tip it was
- *        made for (Xefg::dof_frame), so that with the new parameters at
- *        zero the displacement field is the same as before the event.
+ *        through gains a step parameter of the whole line, one whose
+ *        support holds the new tip gains branch parameters about it.
+ *        Parameters are only added, never changed or removed: each keeps
+ *        the part of the line it was made with (Xefg::dof_line) and a
+ *        branch parameter its tip (Xefg::dof_frame), so that with the new
+ *        parameters at zero the displacement field is the same as before
+ *        the event, whatever the angle of the new segment.
  *        The parameters of a node stay together (its standard one first),
  *        so the later ones are renumbered in place.
  */
@@ -44,8 +46,9 @@ static int lacks(const Xefg *x, int c, int I, int *tip_end)
         if (x->dof_crack[q] != c)
             continue;
         const double *f = x->dof_frame + 4 * q;
-        if (cut == SUPPORT_CUT && x->dof_kind[q] == DOF_STEP)
-            return 0;                                /* has its step */
+        if (cut == SUPPORT_CUT && x->dof_kind[q] == DOF_STEP &&
+            x->dof_line[2 * q] == 0 && x->dof_line[2 * q + 1] == l->n)
+            return 0;                    /* has a step of the whole line */
         if (cut == SUPPORT_TIP && x->dof_kind[q] >= DOF_BRANCH &&
             f[0] == tip[0] && f[1] == tip[1] && f[2] == dir[0] && f[3] == dir[1])
             return 0;                                /* has this tip's */
@@ -69,6 +72,8 @@ static void move(Xefg *x, int q, int d)
     x->dof_crack[d] = x->dof_crack[q];
     x->dof_end[d] = x->dof_end[q];
     memcpy(x->dof_frame + 4 * d, x->dof_frame + 4 * q, 4 * sizeof(double));
+    x->dof_line[2 * d] = x->dof_line[2 * q];
+    x->dof_line[2 * d + 1] = x->dof_line[2 * q + 1];
     x->mass[d] = x->mass[q];
     x->load[d] = x->load[q];
     for (int k = 0; k < 2; k++) {
@@ -130,6 +135,8 @@ int growth_parameters(Xefg *x, Growth *g, int c, const double a[2],
             f[0] = f[1] = f[2] = f[3] = 0.0;
             if (e >= 0)                              /* the tip it enriches */
                 crack_line_tip(&x->crack[c], e, f, f + 2);
+            x->dof_line[2 * q] = 0;                  /* the line it knows */
+            x->dof_line[2 * q + 1] = x->crack[c].n;
             x->mass[q] = x->load[q] = 0.0;           /* lumped later */
             for (int k = 0; k < 2; k++)
                 x->u[2 * q + k] = x->v[2 * q + k] = x->a[2 * q + k] =

@@ -58,6 +58,7 @@ static int reserve_parameters(Xefg *x, int cap)
            xefg_grow((void **)&x->dof_crack, sizeof(int), cap) ||
            xefg_grow((void **)&x->dof_end, sizeof(int), cap) ||
            xefg_grow((void **)&x->dof_frame, 4 * d, cap) ||
+           xefg_grow((void **)&x->dof_line, 2 * sizeof(int), cap) ||
            xefg_grow((void **)&x->mass, d, cap) ||
            xefg_grow((void **)&x->load, d, cap) ||
            xefg_grow((void **)&x->u, 2 * d, cap) ||

@@ -63,8 +63,8 @@ void shape_rows_free(ShapeRows *R)
 void xefg_enrichment(const Xefg *x, int q, double px, double py, double *E,
                      double *Ex, double *Ey)
 {
-    const CrackLine *c = &x->crack[x->dof_crack[q]];
-    int side = crack_line_side(c, px, py, NULL);
+    CrackLine c = xefg_line_of(x, q);            /* the part it knows */
+    int side = crack_line_side(&c, px, py, NULL);
     side = side ? side : 1;
     *Ex = *Ey = 0.0;
     if (x->dof_kind[q] == DOF_STEP) {

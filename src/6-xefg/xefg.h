@@ -79,6 +79,11 @@ typedef struct Xefg {
                              parameter is made: tip x, y and unit direction
                              (4 per parameter; a crack that grows leaves
                              its old parameters their old tips) */
+    int *dof_line;      /**< the part of its crack an enriched parameter
+                             knows: its first point and how many (2 per
+                             parameter); the whole line when it is made,
+                             so that a crack that grows later changes no
+                             parameter's function */
     int nstep;          /**< step (Heaviside) parameters */
     int nbranch;        /**< branch parameters */
     double *mass;       /**< lumped mass of each parameter (section 2.5) */
@@ -207,6 +212,17 @@ double xefg_kinetic_energy(const Xefg *x);
 
 /** @brief Strain energy of the Gauss points (mJ). */
 double xefg_strain_energy(const Xefg *x, const Sim *sim);
+
+/** @brief The part of its crack enriched parameter @p q knows
+ *         (Xefg::dof_line), as a line of its own. */
+static inline CrackLine xefg_line_of(const Xefg *x, int q)
+{
+    CrackLine c = x->crack[x->dof_crack[q]];
+    c.x += x->dof_line[2 * q];
+    c.y += x->dof_line[2 * q];
+    c.n = x->dof_line[2 * q + 1];
+    return c;
+}
 
 /** @brief Append one row to @p R of @p n entries (grown as needed): the
  *         entries are then written at R->start[R->n - 1] ...

@@ -97,8 +97,9 @@ static int parameters(Xefg *x)
     x->dof_crack = malloc(sizeof(int) * (size_t)cap);
     x->dof_end = malloc(sizeof(int) * (size_t)cap);
     x->dof_frame = malloc(4 * sizeof(double) * (size_t)cap);
+    x->dof_line = malloc(2 * sizeof(int) * (size_t)cap);
     if (!x->node_dof || !x->dof_node || !x->dof_kind || !x->dof_crack ||
-        !x->dof_end || !x->dof_frame)
+        !x->dof_end || !x->dof_frame || !x->dof_line)
         return -1;
     int q = 0;
     for (int I = 0; I < n; I++) {
@@ -124,7 +125,8 @@ static int parameters(Xefg *x)
                 xefg_grow((void **)&x->dof_kind, sizeof(int), cap) ||
                 xefg_grow((void **)&x->dof_crack, sizeof(int), cap) ||
                 xefg_grow((void **)&x->dof_end, sizeof(int), cap) ||
-                xefg_grow((void **)&x->dof_frame, 4 * sizeof(double), cap))
+                xefg_grow((void **)&x->dof_frame, 4 * sizeof(double), cap) ||
+                xefg_grow((void **)&x->dof_line, 2 * sizeof(int), cap))
                 return -1;
         }
         for (int k = 0; k < m; k++, q++) {
@@ -136,6 +138,8 @@ static int parameters(Xefg *x)
             fr[0] = fr[1] = fr[2] = fr[3] = 0.0;
             if (kinds[k] >= DOF_BRANCH)
                 crack_line_tip(&x->crack[crack[k]], end[k], fr, fr + 2);
+            x->dof_line[2 * q] = 0;                 /* the whole line */
+            x->dof_line[2 * q + 1] = crack[k] >= 0 ? x->crack[crack[k]].n : 0;
         }
     }
     x->node_dof[n] = q;
@@ -422,7 +426,7 @@ void xefg_free(Xefg *x)
 {
     void *arrays[] = {x->X, x->Y, x->d, x->hx, x->hy, x->crack, x->node_dof,
                       x->dof_node, x->dof_kind, x->dof_crack, x->dof_end,
-                      x->dof_frame,
+                      x->dof_frame, x->dof_line,
                       x->mass, x->load, x->u, x->v, x->a, x->f, x->gw, x->gx, x->gy,
                       x->gnode, x->gs, x->ge, x->cell_w};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)

@@ -43,6 +43,11 @@
  *   on a node: the run reaches the edge without instability, every crack
  *   point within 0.25 h of x = 6.25 (the crack is h / 2 off the bar's
  *   symmetry line), balance within 1 %.
+ * - inclined_crack_turns: the crack from (5, 0.5) to (6, 2.5), 26.57
+ *   degrees from the vertical, in the same bar (to t = 0.6 ms): it grows;
+ *   its last segment within 15 degrees of the vertical (normal to the
+ *   pull); every new cohesive point closed at its event (the field kept
+ *   however the crack turns); balance within 1 %.
  */
 #include <math.h>
 #include <stdio.h>
@@ -346,6 +351,43 @@ static void beam_grows_straight(void **state)
     tk_free(s);
 }
 
+/** A crack inclined at 63 degrees turns to grow across the pull. */
+static void inclined_crack_turns(void **state)
+{
+    (void)state;
+    const char *const over[] = {"run.time=0.6",
+                                "cracks.[0].points=([5.0, 0.5], [6.0, 2.5])",
+                                NULL};
+    Sim *s = tk_load_file(SCENE, over);
+    Xefg *x = xefg_of(s);
+    int n0 = x->crack[0].n;
+    Seen v;
+    printf("  an inclined crack:\n");
+    watch(s, 6.0, &v);
+    const CrackLine *l = &x->crack[0];
+    TkBounds b = {0, 0};
+    double first = 0.0, last = 0.0;
+    if (l->n > n0) {
+        first = atan2(l->x[n0] - l->x[n0 - 1], l->y[n0] - l->y[n0 - 1]);
+        last = atan2(l->x[l->n - 1] - l->x[l->n - 2],
+                     l->y[l->n - 1] - l->y[l->n - 2]);
+    }
+    double deg = 180.0 / 3.14159265358979;
+    printf("    %d events; ends at (%g, %g); the first new segment %.2f and the "
+           "last %.2f degrees from the vertical (the crack was at 26.57); %d new "
+           "cohesive points not closed; worst balance error %.2e\n", v.events,
+           l->x[l->n - 1], l->y[l->n - 1], first * deg, last * deg, v.open_new,
+           v.worst);
+    tk_bound(&b, 4, v.events > 0, "no growth");
+    tk_bound(&b, 4, fabs(last * deg) <= 15.0, "the last segment %.2f degrees "
+             "from the vertical", last * deg);
+    tk_bound(&b, 4, v.open_new == 0, "%d new cohesive points not closed",
+             v.open_new);
+    tk_bound(&b, 4, v.worst <= 0.01, "balance off by %.3g", v.worst);
+    tk_bounds_finish(&b);
+    tk_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -354,6 +396,7 @@ int main(void)
         cmocka_unit_test(edge_stops_growth),
         cmocka_unit_test(full_stops_the_run),
         cmocka_unit_test(tip_on_a_node),
+        cmocka_unit_test(inclined_crack_turns),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
