@@ -48,9 +48,13 @@
  *   its last segment within 15 degrees of the vertical (normal to the
  *   pull); every new cohesive point closed at its event (the field kept
  *   however the crack turns); balance within 1 %.
+ * - path_in_the_outputs: the program's last cracks_NNNNN.csv of the bar
+ *   run to the edge holds the 2 + 7 points of the grown crack, the last
+ *   at y = 6.
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cohesive.h"
@@ -388,6 +392,42 @@ static void inclined_crack_turns(void **state)
     tk_free(s);
 }
 
+/** The path in the outputs: the program writes the grown crack into the
+ *  cracks_NNNNN series of stage 2, point by point. */
+static void path_in_the_outputs(void **state)
+{
+    (void)state;
+    char out[8192], path[256];
+    int rc = tk_run_mpm(SCENE " -q -o build/test-xefg-growth run.time=0.6 "
+                        "run.snapshots=2", out, sizeof out);
+    if (rc)
+        fail_msg("exit %d: %s", rc, out);
+    int last = -1;
+    for (int k = 0; k < 100; k++) {
+        snprintf(path, sizeof path, "build/test-xefg-growth/cracks_%05d.csv", k);
+        FILE *f = fopen(path, "r");
+        if (!f)
+            break;
+        fclose(f);
+        last = k;
+    }
+    assert_true(last >= 1);
+    snprintf(path, sizeof path, "build/test-xefg-growth/cracks_%05d.csv", last);
+    char *text = tk_slurp(path, NULL);
+    int points = 0;
+    double y = 0.0;
+    for (char *l = strstr(text, "\n0,"); l; l = strstr(l + 1, "\n0,")) {
+        int c, j;
+        double px;
+        if (sscanf(l + 1, "%d,%d,%lf,%lf", &c, &j, &px, &y) == 4)
+            points++;
+    }
+    printf("  %s: %d points, the last at y = %g\n", path, points, y);
+    assert_int_equal(points, 9);
+    assert_true(fabs(y - 6.0) < 1e-9);
+    free(text);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -397,6 +437,7 @@ int main(void)
         cmocka_unit_test(full_stops_the_run),
         cmocka_unit_test(tip_on_a_node),
         cmocka_unit_test(inclined_crack_turns),
+        cmocka_unit_test(path_in_the_outputs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
