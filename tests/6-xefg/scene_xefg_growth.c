@@ -48,6 +48,11 @@
  *   its last segment within 15 degrees of the vertical (normal to the
  *   pull); every new cohesive point closed at its event (the field kept
  *   however the crack turns); balance within 1 %.
+ * - tip_at_end_zero: the bar's crack given from its tip to its mouth,
+ *   so that it grows at its end 0 (new points go before the first): the
+ *   same 7 events to the edge as the other way round, the new points
+ *   before the old ones, within 0.05 h of x = 6, no tip left, balance
+ *   within 1 %.
  * - path_in_the_outputs: the program's last cracks_NNNNN.csv of the bar
  *   run to the edge holds the 2 + 7 points of the grown crack, the last
  *   at y = 6.
@@ -392,6 +397,47 @@ static void inclined_crack_turns(void **state)
     tk_free(s);
 }
 
+/** The same crack given from its tip to its mouth: the tip is its end 0,
+ *  and a new segment goes before its first point. */
+static void tip_at_end_zero(void **state)
+{
+    (void)state;
+    const char *const over[] = {"run.time=0.6",
+                                "cracks.[0].points=([6.0, 2.5], [6.0, 0.5])",
+                                NULL};
+    Sim *s = tk_load_file(SCENE, over);
+    Xefg *x = xefg_of(s);
+    double h = x->grow->h;
+    printf("  the tip at end 0:\n");
+    int events = 0;
+    double worst = 0.0;
+    while (s->step < s->nsteps) {
+        int n0 = x->grow->nevent;
+        tk_steps(s, 1);
+        events += x->grow->nevent > n0;
+        if (s->step % 100 == 0 || x->grow->nevent > n0)
+            worst = fmax(worst, balance(s));
+    }
+    const CrackLine *l = &x->crack[0];
+    double xdev = 0.0;
+    for (int i = 0; i < l->n; i++)
+        xdev = fmax(xdev, fabs(l->x[i] - 6.0));
+    printf("    %d events; %d points, the first (%g, %g), the last (%g, %g); "
+           "largest |x - 6| %.3g h; tips %d %d; worst balance error %.2e\n",
+           events, l->n, l->x[0], l->y[0], l->x[l->n - 1], l->y[l->n - 1],
+           xdev / h, l->tip[0], l->tip[1], worst);
+    TkBounds b = {0, 0};
+    tk_bound(&b, 4, events == 7 && l->n == 9, "%d events, %d points", events,
+             l->n);
+    tk_bound(&b, 4, l->y[0] >= 6.0 - 1e-9 && l->y[l->n - 1] == 0.5,
+             "the new points not before the first");
+    tk_bound(&b, 4, xdev <= 0.05 * h, "crack off the line by %.3g", xdev);
+    tk_bound(&b, 4, !l->tip[0] && !l->tip[1], "a tip is left");
+    tk_bound(&b, 4, worst <= 0.01, "balance off by %.3g", worst);
+    tk_bounds_finish(&b);
+    tk_free(s);
+}
+
 /** The path in the outputs: the program writes the grown crack into the
  *  cracks_NNNNN series of stage 2, point by point. */
 static void path_in_the_outputs(void **state)
@@ -437,6 +483,7 @@ int main(void)
         cmocka_unit_test(full_stops_the_run),
         cmocka_unit_test(tip_on_a_node),
         cmocka_unit_test(inclined_crack_turns),
+        cmocka_unit_test(tip_at_end_zero),
         cmocka_unit_test(path_in_the_outputs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
