@@ -114,6 +114,7 @@ typedef struct Seen {
     int late;          /**< events whose recorded sigma_1 was below f_t */
     double before_max; /**< largest sigma_1 / f_t the step before an event */
     double worst;      /**< worst balance error */
+    double t_worst;    /**< when */
     long after_edge;   /**< events after the crack went through */
     double xdev;       /**< largest |x - x_line| of a crack point */
     int open_new;      /**< new cohesive points not closed at insertion */
@@ -178,8 +179,8 @@ static void watch(Sim *s, double xline, Seen *v)
                    d, cohesive_delta0(&C->set[0].law));
         }
         through = !x->crack[0].tip[0] && !x->crack[0].tip[1];
-        if (s->step % 100 == 0)
-            v->worst = fmax(v->worst, balance(s));
+        if (s->step % 100 == 0 && balance(s) > v->worst)
+            v->worst = balance(s), v->t_worst = s->t;
     }
     v->worst = fmax(v->worst, balance(s));
     const CrackLine *l = &x->crack[0];
@@ -341,8 +342,9 @@ static void beam_grows_straight(void **state)
     printf("    %d events, %d segments, tip at (%g, %g); largest sigma_1 / f_t "
            "the step before an event %.5f; largest |x - 9| %.3g mm (%.3g h); "
            "%d entries of the crack's parameters in the held places' rows; "
-           "worst balance error %.2e\n", v.events, added, l->x[l->n - 1],
-           l->y[l->n - 1], v.before_max, v.xdev, v.xdev / h, held, v.worst);
+           "worst balance error %.2e (t = %.4f ms)\n", v.events, added,
+           l->x[l->n - 1], l->y[l->n - 1], v.before_max, v.xdev, v.xdev / h,
+           held, v.worst, v.t_worst);
     tk_bound(&b, 4, v.events >= 2, "%d events", v.events);
     tk_bound(&b, 4, v.xdev <= 0.05 * h, "crack off the line by %.3g", v.xdev);
     tk_bound(&b, 4, added == v.events, "%d segments for %d events", added,
