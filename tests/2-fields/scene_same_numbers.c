@@ -85,6 +85,8 @@ static const char *const elsewhere[][2] = {
     {"tests/3-crossing/scenes/tip_mid_201.cfg", "tip_mid_101.cfg refined"},
     {"tests/4-contact/scenes/inclined_crack_fine.cfg", "inclined_crack.cfg refined"},
     {"tests/6-xefg/scenes/plate_crack.cfg", "run.method = \"xefg\" is stage 6's"},
+    {"tests/6-xefg/scenes/growth_bar.cfg", "cracks.growth is stage 6's"},
+    {"tests/6-xefg/scenes/growth_beam.cfg", "cracks.growth is stage 6's"},
     {"tests/7-fracture/scenes/dcb_j.cfg", "cracks.j_integral is stage 7's"},
 };
 
