@@ -49,6 +49,12 @@ static int check_cohesive(const Growth *g, const Xefg *x, const Sim *sim,
     return 0;
 }
 
+/** Entries for @p n things, and one more (never zero). */
+static size_t room(int n)
+{
+    return (size_t)(n > 0 ? n : 0) + 1;
+}
+
 /** Grow every per-parameter array of @p x to @p cap parameters. */
 static int reserve_parameters(Xefg *x, int cap)
 {
@@ -149,12 +155,12 @@ int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err, size_t errlen)
         if (s->length == 0.0)
             s->length = h;                     /* default: one node spacing */
         if (s->max_segments == 0)              /* default: across the grid */
-            s->max_segments = (int)ceil(diag / s->length);
+            s->max_segments = (int)fmin(ceil(diag / s->length), 100000.0);
         events += s->max_segments;
         L = fmax(L, s->length);
     }
-    g->point_cap = calloc((size_t)g->ncrack, sizeof(int));
-    g->event = malloc(sizeof(GrowthEvent) * (size_t)(events > 0 ? events : 1));
+    g->point_cap = calloc(room(g->ncrack), sizeof(int));
+    g->event = malloc(sizeof(GrowthEvent) * room(events));
     if (!g->point_cap || !g->event)
         goto oom;
     g->event_cap = events;
@@ -180,6 +186,15 @@ int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err, size_t errlen)
                                2.0 * PI_UP * dmax / h + 2.0 * L / h) + 8;
     int cut_cells = 2 * ((int)ceil(L / h) + 2);
     int support = (int)ceil(PI_UP * dmax * dmax / (h * h)) + 8;
+    double biggest = (double)events * (zone_cells * (double)n * n +
+                                       cut_cells * 24.0 * n * n) *
+                     (longest_row(&x->gauss) + support * (1.0 + nb));
+    if (biggest > 5e8) {                        /* entries of the rows */
+        snprintf(err, errlen, "%s: growth: room for %d segments of %g would "
+                 "take some %.3g row entries: lower max_segments or raise "
+                 "length", sim->scene.file, events, L, biggest);
+        return -1;
+    }
     int zone_pts = zone_cells * n * n + cut_cells * 24 * n * n;
     int per_row = longest_row(&x->gauss) + support * (1 + nb);
     g->dof_cap = x->ndof + events * near_nodes * (1 + nb);
@@ -212,16 +227,16 @@ int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err, size_t errlen)
     /* scratch of one event */
     int marks = g->gauss_cap > x->nnode ? g->gauss_cap : x->nnode;
     marks = marks > g->coh_cap ? marks : g->coh_cap;
-    g->add = calloc((size_t)x->nnode + 1, sizeof(int));
-    g->shift = calloc((size_t)x->nnode + 1, sizeof(int));
-    g->mark = calloc((size_t)marks, sizeof(int));
-    g->len = calloc((size_t)marks + 1, sizeof(int));
-    g->diag = calloc((size_t)g->dof_cap, sizeof(double));
-    g->zs = malloc(2 * sizeof(double) * (size_t)g->dof_cap);
-    g->kzs = malloc(2 * sizeof(double) * (size_t)g->dof_cap);
-    g->gss = malloc(3 * sizeof(double) * (size_t)g->gauss_cap);
+    g->add = calloc(room(x->nnode), sizeof(int));
+    g->shift = calloc(room(x->nnode), sizeof(int));
+    g->mark = calloc(room(marks), sizeof(int));
+    g->len = calloc(room(marks), sizeof(int));
+    g->diag = calloc(room(g->dof_cap), sizeof(double));
+    g->zs = malloc(2 * sizeof(double) * room(g->dof_cap));
+    g->kzs = malloc(2 * sizeof(double) * room(g->dof_cap));
+    g->gss = malloc(3 * sizeof(double) * room(g->gauss_cap));
     g->quad_cap = 256 * n * n;
-    g->quad = malloc(sizeof(QuadPoint) * (size_t)g->quad_cap);
+    g->quad = malloc(sizeof(QuadPoint) * room(g->quad_cap));
     g->qw = quad_work_new(QUAD_CUTS);
     int rows = zone_cells > coh_zone ? zone_cells : coh_zone;
     if (!g->add || !g->shift || !g->mark || !g->len || !g->diag || !g->zs ||
