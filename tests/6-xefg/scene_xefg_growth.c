@@ -53,6 +53,9 @@
  *   same 7 events to the edge as the other way round, the new points
  *   before the old ones, within 0.05 h of x = 6, no tip left, balance
  *   within 1 %.
+ * - both_tips_grow: a crack inside the bar, from (6, 2.5) to (6, 4.5):
+ *   both ends grow, a point per event, through to both edges (no tip
+ *   left), within 0.05 h of x = 6, balance within 1 %.
  * - path_in_the_outputs: the program's last cracks_NNNNN.csv of the bar
  *   run to the edge holds the 2 + 7 points of the grown crack, the last
  *   at y = 6.
@@ -440,6 +443,45 @@ static void tip_at_end_zero(void **state)
     tk_free(s);
 }
 
+/** A crack inside the bar: both its ends are tips, and both grow. */
+static void both_tips_grow(void **state)
+{
+    (void)state;
+    const char *const over[] = {"run.time=0.6",
+                                "cracks.[0].points=([6.0, 2.5], [6.0, 4.5])",
+                                NULL};
+    Sim *s = tk_load_file(SCENE, over);
+    Xefg *x = xefg_of(s);
+    double h = x->grow->h, worst = 0.0;
+    int ends[2] = {0, 0};
+    while (s->step < s->nsteps) {
+        int n0 = x->grow->nevent;
+        tk_steps(s, 1);
+        for (int i = n0; i < x->grow->nevent; i++)
+            ends[x->grow->event[i].end]++;
+        if (s->step % 100 == 0 || x->grow->nevent > n0)
+            worst = fmax(worst, balance(s));
+    }
+    const CrackLine *l = &x->crack[0];
+    double xdev = 0.0;
+    for (int i = 0; i < l->n; i++)
+        xdev = fmax(xdev, fabs(l->x[i] - 6.0));
+    printf("  both tips: %d events at end 0, %d at end 1; from (%g, %g) to "
+           "(%g, %g); largest |x - 6| %.3g h; tips %d %d; worst balance error "
+           "%.2e\n", ends[0], ends[1], l->x[0], l->y[0], l->x[l->n - 1],
+           l->y[l->n - 1], xdev / h, l->tip[0], l->tip[1], worst);
+    TkBounds b = {0, 0};
+    tk_bound(&b, 4, ends[0] > 0 && ends[1] > 0, "an end did not grow");
+    tk_bound(&b, 4, l->n == 2 + ends[0] + ends[1], "%d points", l->n);
+    tk_bound(&b, 4, l->y[0] <= 1.0 + 1e-9 && l->y[l->n - 1] >= 6.0 - 1e-9,
+             "not through");
+    tk_bound(&b, 4, !l->tip[0] && !l->tip[1], "a tip is left");
+    tk_bound(&b, 4, xdev <= 0.05 * h, "crack off the line by %.3g", xdev);
+    tk_bound(&b, 4, worst <= 0.01, "balance off by %.3g", worst);
+    tk_bounds_finish(&b);
+    tk_free(s);
+}
+
 /** The path in the outputs: the program writes the grown crack into the
  *  cracks_NNNNN series of stage 2, point by point. */
 static void path_in_the_outputs(void **state)
@@ -486,6 +528,7 @@ int main(void)
         cmocka_unit_test(tip_on_a_node),
         cmocka_unit_test(inclined_crack_turns),
         cmocka_unit_test(tip_at_end_zero),
+        cmocka_unit_test(both_tips_grow),
         cmocka_unit_test(path_in_the_outputs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
