@@ -75,6 +75,26 @@ int cohesive_read(Sim *sim, const config_setting_t *s, int index,
 int cohesive_build(Cohesive *c, const Xefg *x, const Sim *sim,
                    const CellList *cl, char *err, size_t errlen);
 
+/**
+ * @brief The jump row of crack @p k at (px, py) from the last row of @p R
+ *        (the place's own row): the enriched parameters of the crack and
+ *        their jumps Phi_I [[E_q]] into @p dof and @p N (NULL: count only).
+ * @return how many entries.
+ */
+int cohesive_jump_row(const Xefg *x, const ShapeRows *R, int k, double px,
+                      double py, int *dof, double *N);
+
+/**
+ * @brief The points of segment @p g of crack @p k (the parts inside a
+ *        body, in pieces no longer than @p h, @p x's Gauss rule on each)
+ *        appended to @p c with their jump rows, using @p R as scratch and
+ *        growing the arrays beyond *@p cap points only when needed.
+ * @return 0, or -1 with a message in @p err.
+ */
+int cohesive_segment_points(Cohesive *c, const Xefg *x, const Sim *sim,
+                            const CellList *cl, int k, int g, double h,
+                            ShapeRows *R, int *cap, char *err, size_t errlen);
+
 /** @brief Release what cohesive_build() and cohesive_read() allocated. */
 void cohesive_free(Cohesive *c);
 

@@ -28,10 +28,15 @@ static int body_at(const Scene *sc, double px, double py)
  *  @p q at (px, py) on its crack. */
 static double enrichment_jump(const Xefg *x, int q, double px, double py)
 {
+    CrackLine line = xefg_line_of(x, q);         /* the part it knows */
+    double dist;
+    crack_line_side(&line, px, py, &dist);
+    if (dist > 1e-9 * x->hx[x->dof_node[q]])
+        return 0.0;          /* on a later segment: its function is smooth */
     if (x->dof_kind[q] == DOF_STEP)
         return 2.0;                                   /* H = +-1, eq. 3 */
-    double tip[2], dir[2], Bp[BRANCH_MAX], Bm[BRANCH_MAX];
-    crack_line_tip(&x->crack[x->dof_crack[q]], x->dof_end[q], tip, dir);
+    double Bp[BRANCH_MAX], Bm[BRANCH_MAX];
+    const double *tip = x->dof_frame + 4 * q, *dir = tip + 2; /* its tip */
     int np = branch_functions(x->set.tip, x->set.m, tip, dir, 1, px, py, Bp,
                               NULL, NULL);
     int nm = branch_functions(x->set.tip, x->set.m, tip, dir, -1, px, py, Bm,
@@ -53,20 +58,12 @@ static int grow_points(Cohesive *c, int n, int *cap)
     return xefg_grow((void **)&c->crack, sizeof(int), *cap);
 }
 
-/** Add the point (px, py) of crack @p k, body @p b, weight @p w and its
- *  jump row (from the row @p R made at the point). @return 0 or -1. */
-static int add_point(Cohesive *c, const Xefg *x, const ShapeRows *R, int k,
-                     double px, double py, double w, const double t[2],
-                     int *cap)
+int cohesive_jump_row(const Xefg *x, const ShapeRows *R, int k, double px,
+                      double py, int *dof, double *N)
 {
-    int n = 0;
-    for (int e = 0; e < R->len; e++)
-        n += x->dof_kind[R->dof[e]] != DOF_STANDARD && x->dof_crack[R->dof[e]] == k;
-    if (grow_points(c, 1, cap) || shape_rows_add(&c->jump, n, 0))
-        return -1;
-    int j = c->jump.start[c->jump.n - 1];
+    int j = 0;
     double phi = 0.0;
-    for (int e = 0; e < R->len; e++) {
+    for (int e = R->start[R->n - 1]; e < R->start[R->n]; e++) {
         int q = R->dof[e];
         if (x->dof_kind[q] == DOF_STANDARD) {
             phi = R->N[e];              /* Phi_I: the node's entries follow */
@@ -74,9 +71,26 @@ static int add_point(Cohesive *c, const Xefg *x, const ShapeRows *R, int k,
         }
         if (x->dof_crack[q] != k)
             continue;
-        c->jump.dof[j] = q;
-        c->jump.N[j++] = phi * enrichment_jump(x, q, px, py);
+        if (dof) {
+            dof[j] = q;
+            N[j] = phi * enrichment_jump(x, q, px, py);
+        }
+        j++;
     }
+    return j;
+}
+
+/** Add the point (px, py) of crack @p k, body @p b, weight @p w and its
+ *  jump row (from the row @p R made at the point). @return 0 or -1. */
+static int add_point(Cohesive *c, const Xefg *x, const ShapeRows *R, int k,
+                     double px, double py, double w, const double t[2],
+                     int *cap)
+{
+    int n = cohesive_jump_row(x, R, k, px, py, NULL, NULL);
+    if (grow_points(c, 1, cap) || shape_rows_add(&c->jump, n, 0))
+        return -1;
+    int j = c->jump.start[c->jump.n - 1];
+    cohesive_jump_row(x, R, k, px, py, c->jump.dof + j, c->jump.N + j);
     int p = c->npt++;
     c->crack[p] = k;
     c->px[p] = px;
@@ -128,6 +142,55 @@ static int inside_part(const Scene *sc, const double a[2], const double t[2],
 }
 
 /// [cohesive_points]
+int cohesive_segment_points(Cohesive *c, const Xefg *x, const Sim *sim,
+                            const CellList *cl, int k, int g, double h,
+                            ShapeRows *R, int *cap, char *err, size_t errlen)
+{
+    const Scene *sc = &sim->scene;
+    const CrackLine *l = &x->crack[k];
+    int n = x->set.gauss;
+    double xi[GAUSS_MAX], gw[GAUSS_MAX];
+    gauss_legendre(n, xi, gw);
+    double a[2] = {l->x[g], l->y[g]};
+    double len = hypot(l->x[g + 1] - a[0], l->y[g + 1] - a[1]);
+    double t[2] = {(l->x[g + 1] - a[0]) / len, (l->y[g + 1] - a[1]) / len};
+    double s0 = 0.0, s1 = 0.0;
+    while (s1 < len &&
+           inside_part(sc, a, t, len, s1, 0.125 * h, &s0, &s1)) {
+        int pieces = (int)ceil((s1 - s0) / h);
+        double ds = (s1 - s0) / pieces;
+        for (int p = 0; p < pieces; p++)
+            for (int i = 0; i < n; i++) {
+                double s = s0 + ds * (p + 0.5 * (1.0 + xi[i]));
+                double px = a[0] + s * t[0], py = a[1] + s * t[1];
+                int b = body_at(sc, px, py);
+                R->n = R->len = 0;
+                int rc = b < 0 ? -1 : xefg_shape_row(x, cl, sim->pts.body,
+                                                     b, px, py, 0, R);
+                if (rc == -2 || (rc == 0 &&
+                    add_point(c, x, R, k, px, py, 0.5 * ds * gw[i] *
+                              sc->bodies[b].thickness, t, cap))) {
+                    snprintf(err, errlen, "%s: out of memory for the "
+                             "cohesive points", sc->file);
+                    return -1;
+                }
+                if (rc) {
+                    char at[SCENE_AT_LEN];
+                    snprintf(err, errlen, "%s: cohesive: the point (%g, %g) "
+                             "of crack %d has no shape functions (%s); "
+                             "raise xefg.support",
+                             scene_lines_at(sc->lines, sc->file,
+                                            c->set[k].line, at, SCENE_AT_LEN),
+                             px, py, k, b < 0 ? "in no body" :
+                             "too few nodes' supports hold it");
+                    return -1;
+                }
+            }
+        s1 += 1e-12 * len;                   /* on past this part */
+    }
+    return 0;
+}
+
 /** The points of crack @p k: each part of a segment inside a body cut in
  *  pieces no longer than @p h, each piece with the Gauss rule of @p n
  *  points. */
@@ -135,50 +198,9 @@ static int crack_points(Cohesive *c, const Xefg *x, const Sim *sim,
                         const CellList *cl, int k, double h, ShapeRows *R,
                         int *cap, char *err, size_t errlen)
 {
-    const Scene *sc = &sim->scene;
-    const CrackLine *l = &x->crack[k];
-    int n = x->set.gauss;
-    double xi[GAUSS_MAX], gw[GAUSS_MAX];
-    gauss_legendre(n, xi, gw);
-    for (int g = 0; g + 1 < l->n; g++) {
-        double a[2] = {l->x[g], l->y[g]};
-        double len = hypot(l->x[g + 1] - a[0], l->y[g + 1] - a[1]);
-        double t[2] = {(l->x[g + 1] - a[0]) / len, (l->y[g + 1] - a[1]) / len};
-        double s0 = 0.0, s1 = 0.0;
-        while (s1 < len &&
-               inside_part(sc, a, t, len, s1, 0.125 * h, &s0, &s1)) {
-            int pieces = (int)ceil((s1 - s0) / h);
-            double ds = (s1 - s0) / pieces;
-            for (int p = 0; p < pieces; p++)
-                for (int i = 0; i < n; i++) {
-                    double s = s0 + ds * (p + 0.5 * (1.0 + xi[i]));
-                    double px = a[0] + s * t[0], py = a[1] + s * t[1];
-                    int b = body_at(sc, px, py);
-                    R->n = R->len = 0;
-                    int rc = b < 0 ? -1 : xefg_shape_row(x, cl, sim->pts.body,
-                                                         b, px, py, 0, R);
-                    if (rc == -2 || (rc == 0 &&
-                        add_point(c, x, R, k, px, py, 0.5 * ds * gw[i] *
-                                  sc->bodies[b].thickness, t, cap))) {
-                        snprintf(err, errlen, "%s: out of memory for the "
-                                 "cohesive points", sc->file);
-                        return -1;
-                    }
-                    if (rc) {
-                        char at[SCENE_AT_LEN];
-                        snprintf(err, errlen, "%s: cohesive: the point (%g, %g) "
-                                 "of crack %d has no shape functions (%s); "
-                                 "raise xefg.support",
-                                 scene_lines_at(sc->lines, sc->file,
-                                                c->set[k].line, at, SCENE_AT_LEN),
-                                 px, py, k, b < 0 ? "in no body" :
-                                 "too few nodes' supports hold it");
-                        return -1;
-                    }
-                }
-            s1 += 1e-12 * len;                   /* on past this part */
-        }
-    }
+    for (int g = 0; g + 1 < x->crack[k].n; g++)
+        if (cohesive_segment_points(c, x, sim, cl, k, g, h, R, cap, err, errlen))
+            return -1;
     return 0;
 }
 /// [cohesive_points]

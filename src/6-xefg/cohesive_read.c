@@ -57,7 +57,8 @@ int cohesive_read(Sim *sim, const config_setting_t *s, int index,
     if (config_setting_type(s) != CONFIG_TYPE_GROUP)
         return scene_error(r, s, "cohesive", "expected a group { law = "
                            "\"linear\"; f_t = 3.0; G_f = 0.1; }");
-    if (scene_check_keys(r, s, cohesive_keys))
+    if (scene_check_open_keys(r, &sim->hooks, "cracks.cohesive", s,
+                              cohesive_keys, NULL))
         return -1;
     Cohesive *c = cohesive_make(sim, index);
     if (!c)
@@ -101,6 +102,9 @@ int cohesive_read(Sim *sim, const config_setting_t *s, int index,
         return scene_error(r, at(s, "shear"), "shear", "%g: the weight of "
                            "sliding in the effective opening must be >= 0 "
                            "(0: normal opening alone)", L->beta);
+    /* keys registered in the law's group: growth (growth.h) */
+    if (scene_read_open_keys(sim, r, "cracks.cohesive", s, index))
+        return -1;
     return 0;
 }
 /// [cohesive_read]

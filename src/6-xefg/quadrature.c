@@ -20,9 +20,10 @@ int gauss_legendre(int n, double *xi, double *w)
      * the Legendre recurrence (zero diagonal, off-diagonal k/sqrt(4k^2-1));
      * the weights 2 z_0^2 from the first components of the eigenvectors */
     double d[GAUSS_MAX] = {0}, e[GAUSS_MAX] = {0}, z[GAUSS_MAX * GAUSS_MAX];
+    double work[2 * GAUSS_MAX];           /* LAPACK's room: no allocation */
     for (int k = 1; k < n; k++)
         e[k - 1] = k / sqrt(4.0 * k * k - 1.0);
-    if (LAPACKE_dstev(LAPACK_COL_MAJOR, 'V', n, d, e, z, n) != 0)
+    if (LAPACKE_dstev_work(LAPACK_COL_MAJOR, 'V', n, d, e, z, n, work) != 0)
         return -1;
     /* the rule is symmetric: average each node with its mirror image */
     for (int i = 0; i < n; i++) {
@@ -44,6 +45,8 @@ typedef struct Pieces {
     int count, cap, vmax;
     int *nv;             /**< vertices of each piece */
     double *x, *y;       /**< piece p's vertices from [p * vmax] */
+    int nv_room;         /**< entries of nv allocated */
+    size_t room;         /**< entries of x and of y allocated */
 } Pieces;
 
 /** Signed distance of (x, y) from the cut's line, + on its left. */
@@ -151,7 +154,8 @@ static int piece_add(Pieces *p, const double *x, const double *y, int n)
             p->y = py;
         if (!nv || !px || !py)
             return -1;
-        p->cap = cap;
+        p->cap = p->nv_room = cap;
+        p->room = nd;
     }
     size_t o = (size_t)p->count * (size_t)p->vmax;
     for (int i = 0; i < n; i++) {
@@ -300,8 +304,58 @@ static int pieces_alloc(Pieces *p, int cap, int vmax)
 {
     size_t nd = (size_t)cap * (size_t)vmax;
     *p = (Pieces){0, cap, vmax, malloc((size_t)cap * sizeof(int)),
-                  malloc(nd * sizeof(double)), malloc(nd * sizeof(double))};
+                  malloc(nd * sizeof(double)), malloc(nd * sizeof(double)),
+                  cap, nd};
     return p->nv && p->x && p->y ? 0 : -1;
+}
+
+/** Empty pieces of at most @p vmax vertices, as many as their room holds. */
+static void pieces_reset(Pieces *p, int vmax)
+{
+    size_t fit = p->room / (size_t)vmax;
+    p->count = 0;
+    p->vmax = vmax;
+    p->cap = fit < (size_t)p->nv_room ? (int)fit : p->nv_room;
+}
+
+/** The room quad_cell_in() works in. */
+struct QuadWork {
+    int max_cuts;        /**< most cuts a cell may have */
+    Cut *cuts;           /**< the cuts */
+    double *tips;        /**< the tips on the cell */
+    double *scratch;     /**< a split's two parts */
+    Pieces cur, next;    /**< the pieces, before and after a cut */
+};
+
+QuadWork *quad_work_new(int max_cuts)
+{
+    QuadWork *w = calloc(1, sizeof *w);
+    if (!w)
+        return NULL;
+    int k = max_cuts > 0 ? max_cuts : 1;
+    int cap_p = 1 + k + k * (k - 1) / 2, vmax = 6 + 2 * k;
+    w->max_cuts = k;
+    w->cuts = malloc((size_t)k * sizeof(Cut));
+    w->tips = malloc((size_t)(2 * k + 1) * sizeof(double));
+    w->scratch = malloc(4 * (size_t)vmax * sizeof(double));
+    int ra = pieces_alloc(&w->cur, cap_p, vmax), rb = pieces_alloc(&w->next, cap_p, vmax);
+    if (!w->cuts || !w->tips || !w->scratch || ra || rb) {
+        quad_work_free(w);
+        return NULL;
+    }
+    return w;
+}
+
+void quad_work_free(QuadWork *w)
+{
+    if (!w)
+        return;
+    free(w->cuts);
+    free(w->tips);
+    free(w->scratch);
+    pieces_free(&w->cur);
+    pieces_free(&w->next);
+    free(w);
 }
 
 /**
@@ -374,8 +428,9 @@ static int cut_and_fan(const Cut *cuts, int ncuts, const double *tips,
 }
 
 /// [quad_cell]
-int quad_cell(const CrackLine *cracks, int ncracks, double x0, double y0,
-              double x1, double y1, int n, QuadPoint *out, int cap)
+int quad_cell_in(QuadWork *w, const CrackLine *cracks, int ncracks, double x0,
+                 double y0, double x1, double y1, int n, QuadPoint *out,
+                 int cap)
 {
     double g[GAUSS_MAX], gw[GAUSS_MAX];
     if (gauss_legendre(n, g, gw) != 0)
@@ -392,27 +447,32 @@ int quad_cell(const CrackLine *cracks, int ncracks, double x0, double y0,
                           NULL, &ntips);
     if (ncuts == 0)
         return tensor_gauss(g, gw, n, x0, y0, x1, y1, out, cap);
-
+    if (!w || ncuts > w->max_cuts)
+        return -2;
     /* k lines cut a convex region into at most 1 + k + k(k-1)/2 pieces of
      * at most 4 + k vertices (room for more, for rounding) */
-    int cap_p = 1 + ncuts + ncuts * (ncuts - 1) / 2, vmax = 6 + 2 * ncuts;
-    Cut *cuts = malloc((size_t)ncuts * sizeof(Cut));
-    double *tips = malloc((size_t)(2 * ntips + 1) * sizeof(double));
-    double *scratch = malloc(4 * (size_t)vmax * sizeof(double));
-    Pieces cur, next;
-    int ra = pieces_alloc(&cur, cap_p, vmax), rb = pieces_alloc(&next, cap_p, vmax);
-    int count = -1;
-    if (cuts && tips && scratch && ra == 0 && rb == 0) {
-        find_cuts(cracks, ncracks, x0, y0, x1 - x0, y1 - y0, tol, cuts, tips,
-                  &ntips);
-        count = cut_and_fan(cuts, ncuts, tips, ntips, x0, y0, x1, y1, tol, g,
-                            gw, n, &cur, &next, scratch, out, cap);
-    }
-    free(cuts);
-    free(tips);
-    free(scratch);
-    pieces_free(&cur);
-    pieces_free(&next);
-    return count;
+    int vmax = 6 + 2 * ncuts;
+    pieces_reset(&w->cur, vmax);
+    pieces_reset(&w->next, vmax);
+    find_cuts(cracks, ncracks, x0, y0, x1 - x0, y1 - y0, tol, w->cuts, w->tips,
+              &ntips);
+    return cut_and_fan(w->cuts, ncuts, w->tips, ntips, x0, y0, x1, y1, tol, g,
+                       gw, n, &w->cur, &w->next, w->scratch, out, cap);
+}
+
+int quad_cell(const CrackLine *cracks, int ncracks, double x0, double y0,
+              double x1, double y1, int n, QuadPoint *out, int cap)
+{
+    double tol = 1e-12 * ((x1 - x0) + (y1 - y0)) +
+                 16 * DBL_EPSILON * (fabs(x0) + fabs(x1) + fabs(y0) + fabs(y1));
+    int ntips;
+    int ncuts = find_cuts(cracks, ncracks, x0, y0, x1 - x0, y1 - y0, tol, NULL,
+                          NULL, &ntips);
+    QuadWork *w = ncuts > 0 ? quad_work_new(ncuts) : NULL;
+    if (ncuts > 0 && !w)
+        return -1;
+    int count = quad_cell_in(w, cracks, ncracks, x0, y0, x1, y1, n, out, cap);
+    quad_work_free(w);
+    return count < -1 ? -1 : count;
 }
 /// [quad_cell]

@@ -41,4 +41,24 @@ int gauss_legendre(int n, double *xi, double *w);
 int quad_cell(const CrackLine *cracks, int ncracks, double x0, double y0,
               double x1, double y1, int n, QuadPoint *out, int cap);
 
+/** The room quad_cell_in() works in (opaque). */
+typedef struct QuadWork QuadWork;
+
+/** @brief Room for cells met by at most @p max_cuts cuts (segments and
+ *         tips). @return it, or NULL out of memory. */
+QuadWork *quad_work_new(int max_cuts);
+
+/** @brief Release the room (NULL: nothing). */
+void quad_work_free(QuadWork *w);
+
+/**
+ * @brief quad_cell() in the room @p w (made once, at set-up), allocating
+ *        nothing unless a piece needs more vertices than the room foresees
+ *        (rounding). @return as quad_cell(); -2 when the cell has more
+ *        cuts than @p w has room for.
+ */
+int quad_cell_in(QuadWork *w, const CrackLine *cracks, int ncracks, double x0,
+                 double y0, double x1, double y1, int n, QuadPoint *out,
+                 int cap);
+
 #endif

@@ -26,8 +26,12 @@ int shape_rows_add(ShapeRows *R, int n, int grad)
         if (!R->start)
             return -1;
         R->start[0] = 0;
-    } else if (xefg_grow((void **)&R->start, sizeof(int), R->n + 2))
-        return -1;
+        R->ncap = 1;
+    } else if (R->n + 1 > R->ncap) {     /* reserved rows: no allocation */
+        if (xefg_grow((void **)&R->start, sizeof(int), R->n + 2))
+            return -1;
+        R->ncap = R->n + 1;
+    }
     if (R->len + n > R->cap) {
         int cap = R->cap ? R->cap : 1024;
         while (cap < R->len + n)
@@ -59,16 +63,16 @@ void shape_rows_free(ShapeRows *R)
 void xefg_enrichment(const Xefg *x, int q, double px, double py, double *E,
                      double *Ex, double *Ey)
 {
-    const CrackLine *c = &x->crack[x->dof_crack[q]];
-    int side = crack_line_side(c, px, py, NULL);
+    CrackLine c = xefg_line_of(x, q);            /* the part it knows */
+    int side = crack_line_side(&c, px, py, NULL);
     side = side ? side : 1;
     *Ex = *Ey = 0.0;
     if (x->dof_kind[q] == DOF_STEP) {
         *E = side;                                      /* eq. 3 */
         return;
     }
-    double tip[2], dir[2], B[BRANCH_MAX], Bx[BRANCH_MAX], By[BRANCH_MAX];
-    crack_line_tip(c, x->dof_end[q], tip, dir);
+    double B[BRANCH_MAX], Bx[BRANCH_MAX], By[BRANCH_MAX];
+    const double *tip = x->dof_frame + 4 * q, *dir = tip + 2; /* its tip */
     int nb = branch_functions(x->set.tip, x->set.m, tip, dir, side, px, py, B,
                               Bx, By);                  /* eq. 5 or 6 */
     int b = x->dof_kind[q] - DOF_BRANCH;

@@ -18,16 +18,21 @@
 /** The relative change of omega^2 that ends them. */
 #define POWER_TOL 1e-6
 
-/// [xefg_power_iteration]
 int xefg_power_iteration(Xefg *x, const Sim *sim)
 {
     size_t n2 = 2 * (size_t)x->ndof;
     double *z = malloc(sizeof(double) * n2), *kz = malloc(sizeof(double) * n2);
     double *gs = malloc(3 * sizeof(double) * (size_t)x->ngauss);
-    if (!z || !kz || !gs) {
-        free(z), free(kz), free(gs);
-        return -1;
-    }
+    int rc = z && kz && gs ? xefg_power_iteration_in(x, sim, z, kz, gs) : -1;
+    free(z), free(kz), free(gs);
+    return rc;
+}
+
+/// [xefg_power_iteration]
+int xefg_power_iteration_in(Xefg *x, const Sim *sim, double *z, double *kz,
+                            double *gs)
+{
+    size_t n2 = 2 * (size_t)x->ndof;
     uint64_t s = 12345u;                      /* a fixed start */
     for (size_t k = 0; k < n2; k++) {
         s = s * 6364136223846793005u + 1442695040888963407u;
@@ -57,7 +62,6 @@ int xefg_power_iteration(Xefg *x, const Sim *sim)
         if (done)
             break;
     }
-    free(z), free(kz), free(gs);
     x->power_iterations = it > POWER_MAX ? POWER_MAX : it;
     x->omega_max = sqrt(lambda);
     x->stable_step = 2.0 / x->omega_max;

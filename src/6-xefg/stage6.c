@@ -12,6 +12,7 @@
 
 #include "checkpoint.h"
 #include "cohesive.h"
+#include "growth.h"
 #include "quadrature.h"
 #include "scene_read.h"
 #include "xefg.h"
@@ -161,8 +162,9 @@ static int xefg_checkpoint(Sim *sim, void *state, FILE *f, int save)
     return 0;
 }
 
-/** A cohesive crack under another method: refused at its first
- *  `cohesive` group (CRAMP's cracks are traction-free or in contact). */
+/** A cohesive crack, or one that grows, under another method: refused at
+ *  its first `cohesive` or `growth` group (CRAMP's cracks are
+ *  traction-free or in contact, and stay as they are). */
 static int cohesive_refused(const Sim *sim, char *err, size_t errlen)
 {
     const Cohesive *c = cohesive_of(sim);
@@ -175,6 +177,19 @@ static int cohesive_refused(const Sim *sim, char *err, size_t errlen)
                  "to run, or remove the cohesive group of crack %d",
                  scene_lines_at(sim->scene.lines, sim->scene.file,
                                 c->set[k].line, at, SCENE_AT_LEN),
+                 sim->scene.run.method->name, k);
+        return -1;
+    }
+    const Growth *g = growth_of(sim);
+    for (int k = 0; g && k < g->ncrack; k++) {
+        if (!g->set[k].on)
+            continue;
+        char at[SCENE_AT_LEN];
+        snprintf(err, errlen, "%s: growth: cracks grow in the XEFG method "
+                 "only, but run.method is \"%s\": add method = \"xefg\" to "
+                 "run, or remove the growth group of crack %d",
+                 scene_lines_at(sim->scene.lines, sim->scene.file,
+                                g->set[k].line, at, SCENE_AT_LEN),
                  sim->scene.run.method->name, k);
         return -1;
     }
@@ -211,7 +226,8 @@ static int xefg_prepare(Sim *sim, void *state, char *err, size_t errlen)
     if (hooks_on_history(&sim->hooks, xefg_history, x) ||
         hooks_on_report(&sim->hooks, xefg_report, x) ||
         hooks_on_checkpoint(&sim->hooks, xefg_checkpoint, x) ||
-        (x->coh && cohesive_subscribe(sim, x->coh))) {
+        (x->coh && cohesive_subscribe(sim, x->coh)) ||
+        (x->grow && growth_subscribe(sim, x->grow))) {
         snprintf(err, errlen, "%s: too many subscribers at a seam",
                  sim->scene.file);
         return -1;
@@ -226,6 +242,7 @@ void stage6_install(Hooks *h)
     hooks_add_choice(h, "run.method", "xefg", &xefg_method);
     hooks_add_key(h, "", "xefg", xefg_read, xefg_keys);
     hooks_add_key(h, "cracks", "cohesive", cohesive_read, cohesive_keys);
+    hooks_add_key(h, "cracks.cohesive", "growth", growth_read, growth_keys);
     hooks_on_prepare(h, xefg_prepare, NULL);
 }
 /// [stage6_install]

@@ -18,6 +18,7 @@
 #include "sim.h"
 
 struct Cohesive;
+struct Growth;
 
 /** The scene's `xefg` section. */
 typedef struct XefgSettings {
@@ -42,6 +43,7 @@ typedef struct ShapeRows {
     double *Ny;     /**< d/dy */
     int len;        /**< entries used */
     int cap;        /**< entries allocated */
+    int ncap;       /**< rows allocated (start holds ncap + 1) */
 } ShapeRows;
 
 /** The velocity constraints of one direction (eq. 22: essential
@@ -73,6 +75,15 @@ typedef struct Xefg {
     int *dof_kind;      /**< DOF_STANDARD, DOF_STEP or DOF_BRANCH + k */
     int *dof_crack;     /**< crack of an enriched parameter (-1: none) */
     int *dof_end;       /**< tip end (0 or 1) of a branch parameter */
+    double *dof_frame;  /**< the tip of a branch parameter, fixed when the
+                             parameter is made: tip x, y and unit direction
+                             (4 per parameter; a crack that grows leaves
+                             its old parameters their old tips) */
+    int *dof_line;      /**< the part of its crack an enriched parameter
+                             knows: its first point and how many (2 per
+                             parameter); the whole line when it is made,
+                             so that a crack that grows later changes no
+                             parameter's function */
     int nstep;          /**< step (Heaviside) parameters */
     int nbranch;        /**< branch parameters */
     double *mass;       /**< lumped mass of each parameter (section 2.5) */
@@ -96,6 +107,7 @@ typedef struct Xefg {
     double omega_max;   /**< its highest frequency estimate */
     int power_iterations; /**< iterations it took */
     struct Cohesive *coh; /**< cohesive cracks (cohesive.h; NULL: none) */
+    struct Growth *grow;  /**< cracks that grow (growth.h; NULL: none) */
     double w_held;      /**< work of the held places so far (counted when
                              a crack is cohesive) */
     double e0;          /**< kinetic + strain energy at the start */
@@ -166,6 +178,11 @@ void xefg_update_and_force(const Xefg *x, const Sim *sim, const double *du,
  */
 int xefg_power_iteration(Xefg *x, const Sim *sim);
 
+/** @brief xefg_power_iteration() in the caller's room: @p z and @p kz of
+ *         2 per parameter, @p gs of 3 per Gauss point (no allocation). */
+int xefg_power_iteration_in(Xefg *x, const Sim *sim, double *z, double *kz,
+                            double *gs);
+
 /** @brief Set up the velocity constraints (boundaries and held points).
  *  @return 0, or -1 with a message. */
 int xefg_constraints_build(Xefg *x, const Sim *sim, const CellList *cl,
@@ -195,6 +212,17 @@ double xefg_kinetic_energy(const Xefg *x);
 
 /** @brief Strain energy of the Gauss points (mJ). */
 double xefg_strain_energy(const Xefg *x, const Sim *sim);
+
+/** @brief The part of its crack enriched parameter @p q knows
+ *         (Xefg::dof_line), as a line of its own. */
+static inline CrackLine xefg_line_of(const Xefg *x, int q)
+{
+    CrackLine c = x->crack[x->dof_crack[q]];
+    c.x += x->dof_line[2 * q];
+    c.y += x->dof_line[2 * q];
+    c.n = x->dof_line[2 * q + 1];
+    return c;
+}
 
 /** @brief Append one row to @p R of @p n entries (grown as needed): the
  *         entries are then written at R->start[R->n - 1] ...

@@ -12,6 +12,7 @@
 #include "cohesive.h"
 #include "cracks.h"
 #include "footprint.h"
+#include "growth.h"
 #include "quadrature.h"
 #include "xefg.h"
 
@@ -95,8 +96,10 @@ static int parameters(Xefg *x)
     x->dof_kind = malloc(sizeof(int) * (size_t)cap);
     x->dof_crack = malloc(sizeof(int) * (size_t)cap);
     x->dof_end = malloc(sizeof(int) * (size_t)cap);
+    x->dof_frame = malloc(4 * sizeof(double) * (size_t)cap);
+    x->dof_line = malloc(2 * sizeof(int) * (size_t)cap);
     if (!x->node_dof || !x->dof_node || !x->dof_kind || !x->dof_crack ||
-        !x->dof_end)
+        !x->dof_end || !x->dof_frame || !x->dof_line)
         return -1;
     int q = 0;
     for (int I = 0; I < n; I++) {
@@ -121,7 +124,9 @@ static int parameters(Xefg *x)
             if (xefg_grow((void **)&x->dof_node, sizeof(int), cap) ||
                 xefg_grow((void **)&x->dof_kind, sizeof(int), cap) ||
                 xefg_grow((void **)&x->dof_crack, sizeof(int), cap) ||
-                xefg_grow((void **)&x->dof_end, sizeof(int), cap))
+                xefg_grow((void **)&x->dof_end, sizeof(int), cap) ||
+                xefg_grow((void **)&x->dof_frame, 4 * sizeof(double), cap) ||
+                xefg_grow((void **)&x->dof_line, 2 * sizeof(int), cap))
                 return -1;
         }
         for (int k = 0; k < m; k++, q++) {
@@ -129,6 +134,12 @@ static int parameters(Xefg *x)
             x->dof_kind[q] = kinds[k];
             x->dof_crack[q] = crack[k];
             x->dof_end[q] = end[k];
+            double *fr = x->dof_frame + 4 * q;      /* the tip it enriches */
+            fr[0] = fr[1] = fr[2] = fr[3] = 0.0;
+            if (kinds[k] >= DOF_BRANCH)
+                crack_line_tip(&x->crack[crack[k]], end[k], fr, fr + 2);
+            x->dof_line[2 * q] = 0;                 /* the whole line */
+            x->dof_line[2 * q + 1] = crack[k] >= 0 ? x->crack[crack[k]].n : 0;
         }
     }
     x->node_dof[n] = q;
@@ -389,6 +400,9 @@ int xefg_build(Xefg *x, const Sim *sim, char *err, size_t errlen)
     if ((x->coh = cohesive_of(sim)) &&              /* before the stable step */
         cohesive_build(x->coh, x, sim, &cl, err, errlen))
         goto done;
+    if ((x->grow = growth_of(sim)) &&               /* room to grow */
+        growth_build(x->grow, x, sim, err, errlen))
+        goto done;
     if (xefg_power_iteration(x, sim)) {
         snprintf(err, errlen, "%s: the power iteration for the stable time "
                  "step gave no finite frequency (highest %g)", sim->scene.file,
@@ -412,6 +426,7 @@ void xefg_free(Xefg *x)
 {
     void *arrays[] = {x->X, x->Y, x->d, x->hx, x->hy, x->crack, x->node_dof,
                       x->dof_node, x->dof_kind, x->dof_crack, x->dof_end,
+                      x->dof_frame, x->dof_line,
                       x->mass, x->load, x->u, x->v, x->a, x->f, x->gw, x->gx, x->gy,
                       x->gnode, x->gs, x->ge, x->cell_w};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)

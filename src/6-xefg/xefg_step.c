@@ -9,6 +9,7 @@
 #include <math.h>
 
 #include "cohesive.h"
+#include "growth.h"
 #include "step.h"
 #include "xefg.h"
 
@@ -118,6 +119,8 @@ int xefg_step(Sim *sim)
         return -1;
     sim->t += dt;
     sim->step++;
+    if (x->grow && growth_after_step(sim, x, x->grow))  /* tips that grow */
+        return -1;
     return 0;
 }
 /// [xefg_step]

@@ -1,0 +1,198 @@
+/**
+ * @file growth.h
+ * @brief Cohesive XEFG cracks that grow (Rabczuk and Zi, section 2 and
+ *        xefg.md 2.3-2.4; the transcript stops at eq. 32, so when, where
+ *        and how a tip grows are our choices): a tip grows by one segment
+ *        when the maximum principal stress averaged ahead of it reaches
+ *        the law's f_t, normal to that stress; the new segment starts
+ *        closed, on the elastic branch of the intrinsic law, and the
+ *        discretisation is updated around it only, in room reserved at
+ *        set-up.
+ */
+#ifndef MPM_GROWTH_H
+#define MPM_GROWTH_H
+
+#include <stddef.h>
+
+#include "cell_list.h"
+#include "quadrature.h"
+#include "xefg.h"
+
+/** One crack's `growth` group. */
+typedef struct XefgGrowthSettings {
+    int on;            /**< the crack has one */
+    double length;     /**< length of a new segment (0: one node spacing) */
+    int max_segments;  /**< most segments the crack may add (0: the default) */
+    int line;          /**< line of the group, for messages */
+} XefgGrowthSettings;
+
+/** One growth event, for the outputs and the tests. */
+typedef struct GrowthEvent {
+    int crack;         /**< which crack */
+    int end;           /**< which end grew (0 or 1) */
+    long step;         /**< the step after which it grew */
+    double t;          /**< the time */
+    double sigma1;     /**< the averaged sigma_1 that made it grow */
+    double x0, y0;     /**< the old tip */
+    double x1, y1;     /**< the new tip */
+} GrowthEvent;
+
+/// [growth_state]
+/** The growth state of a scene: settings per crack, the room reserved at
+ *  set-up and the scratch a growth event works in (no allocation inside a
+ *  time step). */
+typedef struct Growth {
+    int ncrack;              /**< entries of set */
+    XefgGrowthSettings *set;     /**< per crack (on = 0: the crack stays) */
+    double radius;           /**< the averaging radius ahead of a tip */
+    double h;                /**< the node spacing */
+    int *point_cap;          /**< per crack: room for points of its line */
+    int dof_cap;             /**< room for parameters */
+    int gauss_cap;           /**< room for Gauss points (and their rows) */
+    int coh_cap;             /**< room for cohesive points */
+    CellList cl;             /**< the nodes' cell list, kept from set-up */
+    int nevent;              /**< growth events so far */
+    int event_cap;           /**< room for events */
+    GrowthEvent *event;      /**< the events */
+    int power_runs;          /**< power iterations run after set-up */
+    char msg[480];           /**< the message that stops a run */
+    /* scratch, sized at set-up */
+    int *add;                /**< per node: parameters it gains */
+    int *shift;              /**< per node: parameters inserted before it */
+    int *mark;               /**< per Gauss point / node: what to redo */
+    int *len;                /**< per row: new length */
+    double *diag;            /**< per parameter: int rho E^2 (lumping) */
+    double *zs, *kzs, *gss;  /**< the power iteration's vectors */
+    QuadPoint *quad;         /**< one cell's quadrature points */
+    QuadWork *qw;            /**< the room of their cutting */
+    int quad_cap;            /**< their room */
+    ShapeRows row;           /**< one place's row */
+    ShapeRows rows;          /**< rows of the nodes and cohesive points
+                                  redone in an event */
+} Growth;
+/// [growth_state]
+
+/** @brief The growth state of @p sim (NULL when no crack grows). */
+static inline Growth *growth_of(const Sim *sim)
+{
+    return (Growth *)sim_state(sim, "xefg growth");
+}
+
+/** The keys of a crack's `growth` group. */
+extern const char *const growth_keys[];
+
+/**
+ * @brief Read cracks.[@p index].growth = { length = ...; max_segments =
+ *        ...; } (both optional). @return 0, or -1 with a message naming
+ *        the file and line.
+ */
+int growth_read(Sim *sim, const config_setting_t *s, int index,
+                struct SceneReader *r);
+
+/**
+ * @brief Set-up with the discretisation and its cohesive points built:
+ *        refuse growth on a crack without a cohesive law, set the
+ *        defaults, and reserve the room every growth event may use.
+ * @return 0, or -1 with a message naming the file and line in @p err.
+ */
+int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err,
+                 size_t errlen);
+
+/** @brief Release what growth_build() and growth_read() allocated. */
+void growth_free(Growth *g);
+
+/**
+ * @brief The stress averaged over the Gauss points within Growth::radius
+ *        of the tip at end @p end of crack @p c and ahead of it (the half
+ *        disk its direction points into), weighted by their weights, into
+ *        @p s (xx, yy, xy). @return the number of points averaged.
+ */
+int growth_tip_stress(const Growth *g, const Xefg *x, int c, int end,
+                      double s[3]);
+
+/**
+ * @brief The criterion of a tip: from the averaged stress @p s, the value
+ *        that is compared with f_t (returned) and the unit direction the
+ *        crack grows in, @p dir, the one of the two that points ahead
+ *        (@p ahead). Rankine: sigma_1, and the crack grows normal to the
+ *        sigma_1 direction. The acoustic-tensor criterion (xefg.md 2.4)
+ *        plugs in here.
+ */
+double growth_criterion(const double s[3], const double ahead[2],
+                        double dir[2]);
+
+/**
+ * @brief After a step: every growing tip whose criterion reaches f_t grows
+ *        by one segment (growth_insert()). @return 0, or -1 with
+ *        Sim::fail filled when a crack is full or the update fails.
+ */
+int growth_after_step(Sim *sim, Xefg *x, Growth *g);
+
+/**
+ * @brief Add the segment from the tip at end @p end of crack @p c to
+ *        (@p px, @p py) and update what it touches: the crack's line, the
+ *        enrichment of the nodes whose supports it meets (new parameters,
+ *        zero, mass lumped), the Gauss points and rows near it, the rows
+ *        at the nodes, its cohesive points and the jump rows near it, and
+ *        the stable step (power iteration; the run's step only falls).
+ * @return 0, or -1 with a message naming the crack in @p err.
+ */
+int growth_insert(Sim *sim, Xefg *x, Growth *g, int c, int end, double px,
+                  double py, char *err, size_t errlen);
+
+/** Room one more row must find in reserved rows (entries). */
+#define ROW_ROOM 2048
+
+/** @brief Make room in place for rows of lengths @p len (none shorter
+ *  than it was), moving the entries from the last row down (no
+ *  allocation). @return 0, or -1 when a row would shrink or no room. */
+int growth_rows_expand(ShapeRows *R, const int *len, int grad);
+
+/** @brief Copy the values of row @p k of @p S into row @p r of @p R,
+ *  whose room is made (growth_rows_expand()). */
+void growth_copy_row(ShapeRows *R, int r, const ShapeRows *S, int k);
+
+/** @brief Distance from (@p px, @p py) to the segment from @p a to @p b. */
+double growth_segment_distance(const double a[2], const double b[2], double px,
+                               double py);
+
+/**
+ * @brief The parameters the nodes whose supports meet the new segment
+ *        from @p a to @p b of crack @p c lack with the longer line (a step
+ *        one where it now cuts a support through, branch ones about the
+ *        new tip), added at zero after each node's own, the others
+ *        renumbered in place; their masses are left to the caller
+ *        (Growth::add holds how many each node gained).
+ * @return how many were added, or -1 with a message when the room is full.
+ */
+int growth_add_parameters(Xefg *x, Growth *g, int c, const double a[2],
+                      const double b[2], char *err, size_t errlen);
+
+/**
+ * @brief The Gauss points and rows near the new segment from @p a to @p b:
+ *        the cells it cuts get new quadrature points (their state carried
+ *        from the nearest old point of the cell on the same side, plus the
+ *        law's response to the difference of strain), the rows of the
+ *        points within 2 d of it are made again; then the rows at the nodes
+ *        and the lumped masses of the new parameters.
+ * @return 0, or -1 with a message.
+ */
+int growth_rows(Sim *sim, Xefg *x, Growth *g, int c, const double a[2],
+                const double b[2], char *err, size_t errlen);
+
+/**
+ * @brief The cohesive points of the new segment (segment @p seg of crack
+ *        @p c), with their history at zero (closed, on the elastic
+ *        branch), and the jump rows of the points within 2 d of the
+ *        segment from @p a to @p b made again (they gain the new
+ *        parameters). @return 0, or -1 with a message.
+ */
+int growth_cohesive(Sim *sim, Xefg *x, Growth *g, int c, int seg,
+                    const double a[2], const double b[2], char *err,
+                    size_t errlen);
+
+/** @brief The history columns and report of a scene whose cracks grow.
+ *  @return 0, or -1 when a seam is full. */
+int growth_subscribe(Sim *sim, Growth *g);
+
+#endif

@@ -1,0 +1,59 @@
+/**
+ * @file growth_criterion.c
+ * @brief When and where a tip grows (xefg.md 2.4; our choice, the paper's
+ *        criterion is beyond our transcript): the stress averaged over the
+ *        Gauss points ahead of the tip, and Rankine's criterion on it, the
+ *        maximum principal stress against f_t, the crack growing normal to
+ *        it. For a Rankine softening law this is where the acoustic tensor
+ *        first loses its positive determinant, and the normal it gives.
+ */
+#include <math.h>
+
+#include "growth.h"
+
+/// [growth_tip_stress]
+int growth_tip_stress(const Growth *g, const Xefg *x, int c, int end,
+                      double s[3])
+{
+    double tip[2], dir[2], w = 0.0, r2 = g->radius * g->radius;
+    crack_line_tip(&x->crack[c], end, tip, dir);
+    s[0] = s[1] = s[2] = 0.0;
+    int n = 0;
+    for (int p = 0; p < x->ngauss; p++) {
+        double dx = x->gx[p] - tip[0], dy = x->gy[p] - tip[1];
+        if (dx * dx + dy * dy > r2 || dx * dir[0] + dy * dir[1] < 0.0)
+            continue;                      /* not in the half disk ahead */
+        for (int k = 0; k < 3; k++)
+            s[k] += x->gw[p] * x->gs[3 * p + k];
+        w += x->gw[p];
+        n++;
+    }
+    for (int k = 0; k < 3 && w > 0.0; k++)
+        s[k] /= w;
+    return n;
+}
+/// [growth_tip_stress]
+
+/// [growth_criterion]
+double growth_criterion(const double s[3], const double ahead[2],
+                        double dir[2])
+{
+    double mean = 0.5 * (s[0] + s[1]), half = 0.5 * (s[0] - s[1]);
+    double radius = hypot(half, s[2]);
+    double sigma1 = mean + radius;             /* Mohr's circle */
+    dir[0] = ahead[0];
+    dir[1] = ahead[1];
+    if (!(radius > 1e-9 * fabs(mean)))
+        return sigma1;               /* no principal direction: straight on */
+    /* sigma_1 along (cos a, sin a), a = atan2(2 s_xy, s_xx - s_yy) / 2; the
+     * crack's normal is that direction, so it grows along (-sin a, cos a),
+     * the sigma_2 direction, the way that points ahead */
+    double a = 0.5 * atan2(s[2], half);
+    double tx = -sin(a), ty = cos(a);
+    if (tx * ahead[0] + ty * ahead[1] < 0.0)
+        tx = -tx, ty = -ty;
+    dir[0] = tx;
+    dir[1] = ty;
+    return sigma1;
+}
+/// [growth_criterion]

@@ -1,0 +1,86 @@
+/**
+ * @file growth_read.c
+ * @brief A cohesive crack's `growth` group (cracks.[k].cohesive.growth,
+ *        read by cohesive_read()), checked on input: the length of a new
+ *        segment and the most segments the crack may add. It sits in the
+ *        law's group, so a growing crack has a law (growth_build() checks
+ *        again at set-up). CRAMP's `cracks.[k].growth` is stage 7's.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "growth.h"
+#include "scene_read.h"
+
+const char *const growth_keys[] = {"length", "max_segments", NULL};
+
+static void growth_release(void *state)
+{
+    growth_free(state);
+    free(state);
+}
+
+/** The state of @p sim with room for crack @p index, made when missing. */
+static Growth *growth_make(Sim *sim, int index)
+{
+    Growth *g = growth_of(sim);
+    if (!g) {
+        if (!(g = calloc(1, sizeof *g)))
+            return NULL;
+        if (sim_attach(sim, "xefg growth", g, growth_release)) {
+            free(g);
+            return NULL;
+        }
+    }
+    if (index >= g->ncrack) {
+        XefgGrowthSettings *s = realloc(g->set, sizeof *s * (size_t)(index + 1));
+        if (!s)
+            return NULL;
+        memset(s + g->ncrack, 0, sizeof *s * (size_t)(index + 1 - g->ncrack));
+        g->set = s;
+        g->ncrack = index + 1;
+    }
+    return g;
+}
+
+/** The member @p key of @p s, or @p s when it is absent (for a line). */
+static const config_setting_t *at(const config_setting_t *s, const char *key)
+{
+    const config_setting_t *m = config_setting_get_member(s, key);
+    return m ? m : s;
+}
+
+/// [growth_read]
+int growth_read(Sim *sim, const config_setting_t *s, int index,
+                SceneReader *r)
+{
+    if (config_setting_type(s) != CONFIG_TYPE_GROUP)
+        return scene_error(r, s, "growth", "expected a group { length = 0.5; "
+                           "max_segments = 20; } (both optional)");
+    if (scene_check_keys(r, s, growth_keys))
+        return -1;
+    Growth *g = growth_make(sim, index);
+    if (!g)
+        return scene_error(r, s, "growth", "out of memory");
+    XefgGrowthSettings *set = &g->set[index];
+    double length = 0.0, most = 0.0;
+    *set = (XefgGrowthSettings){1, 0.0, 0, (int)config_setting_source_line(s)};
+    int has_length = scene_number(r, s, "length", 0, 0.0, &length);
+    int has_most = scene_number(r, s, "max_segments", 0, 0.0, &most);
+    if (has_length < 0 || has_most < 0)
+        return -1;
+    if (has_length && !(length > 0.0 && isfinite(length)))
+        return scene_error(r, at(s, "length"), "length", "%g: the length of a "
+                           "new segment must be positive (leave it out for "
+                           "one node spacing)", length);
+    if (has_most && !(most >= 1.0 && most <= 100000.0 && most == floor(most)))
+        return scene_error(r, at(s, "max_segments"), "max_segments", "%g: the "
+                           "most segments a crack may add must be a whole "
+                           "number from 1 to 100000 (room for them is kept "
+                           "at set-up)", most);
+    set->length = length;
+    set->max_segments = (int)most;
+    return 0;
+}
+/// [growth_read]

@@ -1,0 +1,44 @@
+/**
+ * @file growth_step.c
+ * @brief After each step, the tips that reach the criterion grow, one
+ *        segment per tip per step.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "cohesive.h"
+#include "growth.h"
+#include "step.h"
+
+/// [growth_after_step]
+int growth_after_step(Sim *sim, Xefg *x, Growth *g)
+{
+    for (int k = 0; k < g->ncrack && k < x->ncrack; k++) {
+        if (!g->set[k].on)
+            continue;
+        const CohesiveLaw *L = &x->coh->set[k].law;
+        for (int e = 0; e < 2; e++) {        /* at most one segment a tip */
+            if (!x->crack[k].tip[e])
+                continue;
+            double s[3], tip[2], ahead[2], dir[2];
+            if (growth_tip_stress(g, x, k, e, s) == 0)
+                continue;
+            crack_line_tip(&x->crack[k], e, tip, ahead);
+            double s1 = growth_criterion(s, ahead, dir);
+            if (!(s1 >= L->f_t))
+                continue;
+            double len = g->set[k].length;
+            double px = tip[0] + len * dir[0], py = tip[1] + len * dir[1];
+            if (growth_insert(sim, x, g, k, e, px, py, g->msg,
+                              sizeof g->msg - 16)) {
+                strcat(g->msg, "; the crack");    /* " = k" follows */
+                return step_fail(sim, -1, g->msg, (double)k);
+            }
+            if (g->nevent < g->event_cap)
+                g->event[g->nevent++] = (GrowthEvent){k, e, sim->step, sim->t,
+                                                      s1, tip[0], tip[1], px, py};
+        }
+    }
+    return 0;
+}
+/// [growth_after_step]
