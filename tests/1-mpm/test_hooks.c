@@ -7,6 +7,7 @@
  */
 #include "testkit.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 #include "stages.h"
@@ -118,12 +119,42 @@ static void full_registry_refuses_every_scene(void **state)
     assert_non_null(strstr(err, "more than HOOKS_MAX"));
 }
 
+/* This build's keys and table rows, each registered once: the reader
+ * takes the first registration of a section's key (hooks_find_key()) and
+ * of a row, so a second stage's would be shadowed without a word (stages
+ * 6 and 7 both registered cracks.growth once). */
+static void every_key_and_row_registered_once(void **state)
+{
+    (void)state;
+    Hooks *h = calloc(1, sizeof *h);
+    assert_non_null(h);
+    mpm_install_stages(h);
+    assert_int_equal(h->overflow, 0);
+    for (int a = 0; a < h->nkeys; a++)
+        for (int b = a + 1; b < h->nkeys; b++)
+            if (strcmp(h->keys[a].section, h->keys[b].section) == 0 &&
+                strcmp(h->keys[a].key, h->keys[b].key) == 0)
+                fail_msg("%s.%s registered twice (stages %d and %d)",
+                         h->keys[a].section, h->keys[a].key, h->keys[a].rank,
+                         h->keys[b].rank);
+    for (int a = 0; a < h->nchoices; a++)
+        for (int b = a + 1; b < h->nchoices; b++)
+            if (strcmp(h->choices[a].key, h->choices[b].key) == 0 &&
+                strcmp(h->choices[a].name, h->choices[b].name) == 0)
+                fail_msg("%s = \"%s\" registered twice", h->choices[a].key,
+                         h->choices[a].name);
+    printf("  stage %d: %d keys and %d table rows, each registered once\n",
+           mpm_stage(), h->nkeys, h->nchoices);
+    free(h);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(lists_keep_stage_order),
         cmocka_unit_test(tables_chosen_by_the_scene),
         cmocka_unit_test(full_registry_refuses_every_scene),
+        cmocka_unit_test(every_key_and_row_registered_once),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
