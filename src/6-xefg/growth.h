@@ -33,8 +33,10 @@ typedef struct GrowthEvent {
     long step;         /**< the step after which it grew */
     double t;          /**< the time */
     double sigma1;     /**< the averaged sigma_1 that made it grow */
-    double x0, y0;     /**< the old tip */
-    double x1, y1;     /**< the new tip */
+    double x0;         /**< the old tip: x */
+    double y0;         /**< the old tip: y */
+    double x1;         /**< the new tip: x */
+    double y1;         /**< the new tip: y */
 } GrowthEvent;
 
 /// [growth_state]
@@ -62,7 +64,9 @@ typedef struct Growth {
     int *mark;               /**< per Gauss point / node: what to redo */
     int *len;                /**< per row: new length */
     double *diag;            /**< per parameter: int rho E^2 (lumping) */
-    double *zs, *kzs, *gss;  /**< the power iteration's vectors */
+    double *zs;              /**< the power iteration's vector z */
+    double *kzs;             /**< its K z */
+    double *gss;             /**< its Gauss-point stresses */
     QuadPoint *quad;         /**< one cell's quadrature points */
     QuadWork *qw;            /**< the room of their cutting */
     int quad_cap;            /**< their room */
