@@ -9,7 +9,6 @@
 
 #include "checkpoint.h"
 #include "crack_growth.h"
-#include "crack_contact.h"
 #include "cracks.h"
 #include "step.h"
 
@@ -138,13 +137,6 @@ static void grow_tip(Crack *c, const JTip *T, double x, double y)
 }
 /// [grow_tip]
 
-/** Does crack @p k have contact (stage 4's cracks.[k].contact)? */
-static int has_contact(const Sim *sim, int k)
-{
-    const ContactState *K = sim_state(sim, "crack contact");
-    return K && k < K->ncracks && K->crack[k].law.kind != CONTACT_NONE;
-}
-
 /// [crack_growth_step]
 int crack_growth_step(Sim *sim, CrackGrowth *G, JState *S)
 {
@@ -175,15 +167,17 @@ int crack_growth_step(Sim *sim, CrackGrowth *G, JState *S)
             e->Jsum = e->Ksum[0] = e->Ksum[1] = 0.0;
             e->nsum = 0;
         }
-        e->negative += J < 0.0;             /* an elastic tip has J >= 0 */
+        /* an elastic tip has J >= 0: below -G_c / 10 is no round-off */
+        e->negative += J < -0.1 * s->G_c;
         if (!(J >= s->G_c))
             continue;                       /* when: J reaches G_c */
         if (c->n - 1 >= s->max_segments)
             return step_fail(sim, -1, s->full, s->max_segments);
-        /* shut faces (contact) have no K_I: a negative one is the contact
-           pressure that the interaction integral, made for traction-free
-           faces, reads as K_I */
-        if (KI < 0.0 && has_contact(sim, T->crack))
+        /* faces cannot pass through each other: K_I < 0 is shut faces
+           (with contact, the pressure that the interaction integral, made
+           for traction-free faces, reads as K_I) or faces that overlap
+           (without); the angle is K_I = 0's, |theta| <= 70.53 degrees */
+        if (KI < 0.0)
             KI = 0.0;
         double theta = hoop_angle(KI, KII); /* where: the largest hoop stress */
         double x, y;
@@ -287,7 +281,7 @@ int crack_growth_report(const Sim *sim, void *state, FILE *f)
             "; stopped: its J domain holds crack %d"};
         if (e->stop && fprintf(f, why[e->stop], e->by) < 0)
             return -1;
-        if (e->negative && fprintf(f, "; J < 0 at %ld of its decisions (J does "
+        if (e->negative && fprintf(f, "; J < -G_c/10 at %ld of its decisions (J does "
                                    "not hold on its domain: a kink, shut "
                                    "faces, an edge?)", e->negative) < 0)
             return -1;

@@ -48,8 +48,9 @@ typedef struct GrowthEnd {
     int through;          /**< 1 once it grew out of every body: no more */
     int stop;             /**< GrowthStop: why it grows no more */
     int by;               /**< the crack that stopped it (or -1) */
-    long negative;        /**< decisions with J < 0 (J does not hold on
-                               its domain: a kink, shut faces, an edge) */
+    long negative;        /**< decisions with J < -G_c / 10 (J does not
+                               hold on its domain: a kink, shut faces, an
+                               edge) */
     double Jsum;          /**< sum of J over the block so far */
     double Ksum[2];       /**< sums of K_I and K_II over it */
     long nsum;            /**< evaluations in it */
@@ -99,8 +100,8 @@ int crack_growth_prepare(Sim *sim, void *state, char *err, size_t errlen);
 /**
  * @brief Grow the tips whose fresh J (just evaluated) reaches G_c: at
  *        most one segment per tip, of GrowthSettings::length, at
- *        hoop_angle() from the tip's direction (K_I < 0 counts as 0 on a
- *        crack with contact: its faces are shut); then bring the crossing
+ *        hoop_angle() from the tip's direction (K_I < 0 counts as 0:
+ *        faces cannot pass through each other); then bring the crossing
  *        search and the J tips up to date, as after the cracks move.
  *        A tip stops for good (GrowthEnd::stop) when its next segment
  *        would cross or touch a crack (none is added), or when its new
