@@ -95,8 +95,8 @@
  *     without. Both first kinks are then +70.53 (bound kept, and the
  *     no-contact bound replaced by the same). What contact changes is J:
  *     J / (K_II^2 / E') is 1 for shut faces and 1 + (K_I / K_II)^2 = 2
- *     for overlapping ones (the infinite plate). The first run printed
- *     1.07 and 2.17; bounds 1 +- 0.25 and 2 +- 0.5, set after that run.
+ *     for overlapping ones (the infinite plate). A later run printed
+ *     1.07 and 2.17; bounds 1 +- 0.25 and 2 +- 0.5, set after it.
  *     Only one event per tip came in the 20 ms after the first, against
  *     the >= 3 expected: the wing tip's J, on domains that hold the kink
  *     and the pressed faces, went negative (-1.5e-5 to -5e-5, 9 decisions
