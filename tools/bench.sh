@@ -3,7 +3,8 @@
 # crack costs (stage 2), what the crossing step costs by search (stage 3)
 # and what contact costs (stage 4: crack faces; bodies through contact groups);
 # error against cost (stage 5, a subset of make fig-tradeoff) and, at the
-# end, CRAMP against XEFG on the DCB (stage 6, tools/bench_xefg_dcb.sh).
+# end, CRAMP against XEFG on the DCB (stage 6, tools/bench_xefg_dcb.sh) and
+# what the J-integral and growth cost (stage 7, tools/bench_growth.sh).
 #
 # Speed: particle-steps per second on the two Sulsky disks refined to about
 # 50,000 and 200,000 points (tools/bench/disks_*.cfg).  Each case runs N
@@ -386,4 +387,12 @@ S6=build/stage6/mpm
 if [ -x "$S6" ]; then
     echo
     MPM=$S6 WORK="$WORK" bash tools/bench_xefg_dcb.sh
+fi
+
+# ---- stage 7: what J and growth cost -----------------------------------------
+# tools/bench_growth.sh (it runs alone too).
+S7=build/stage7/mpm
+if [ -x "$S7" ]; then
+    echo
+    MPM=$S7 WORK="$WORK" REPEAT="$REPEAT" bash tools/bench_growth.sh
 fi

@@ -14,9 +14,8 @@
 
 #include "cracks.h"
 
-/** Do segments (a, b) and (c, d) share a point? (closed segments) */
-static int segments_meet(const double *a, const double *b, const double *c,
-                         const double *d)
+int crack_segments_meet(const double *a, const double *b, const double *c,
+                        const double *d)
 {
     double d1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
     double d2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
@@ -115,7 +114,7 @@ int crack_self_crossing(const Crack *c, int *i, int *j)
                     continue;
                 double a[2] = {c->x[s], c->y[s]}, e[2] = {c->x[s + 1], c->y[s + 1]};
                 double f[2] = {c->x[t], c->y[t]}, g[2] = {c->x[t + 1], c->y[t + 1]};
-                if (segments_meet(a, e, f, g)) {
+                if (crack_segments_meet(a, e, f, g)) {
                     *i = s;
                     *j = t;
                     found = 1;

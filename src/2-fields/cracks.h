@@ -167,6 +167,12 @@ extern const CrossingSearch crossing_plain;
  */
 int crack_self_crossing(const Crack *c, int *i, int *j);
 
+/** @brief Do the closed segments (@p a, @p b) and (@p c, @p d), each
+ *         point an {x, y} pair, share a point (cross, or touch)?
+ *  @return 1 or 0. */
+int crack_segments_meet(const double *a, const double *b, const double *c,
+                        const double *d);
+
 /** @brief Make room for @p n points in @p c (freeing any it had).
  *  @return 0, or -1 when memory is exhausted. */
 int crack_alloc_points(Crack *c, int n);

@@ -30,6 +30,14 @@ typedef struct GrowthSettings {
     char full[SCENE_AT_LEN + 96];
 } GrowthSettings;
 
+/** Why a tip grows no more (GrowthEnd::stop), besides cutting through. */
+typedef enum GrowthStop {
+    GROWTH_ON = 0,        /**< it may grow */
+    GROWTH_AT_CRACK,      /**< its next segment would cross or touch a crack */
+    GROWTH_DOMAIN_EDGE,   /**< its widest J domain reaches out of the body */
+    GROWTH_DOMAIN_CRACK   /**< its widest J domain holds another crack */
+} GrowthStop;
+
 /** What one crack end has done (index 2 crack + end). */
 typedef struct GrowthEnd {
     long events;          /**< segments it has gained */
@@ -38,6 +46,11 @@ typedef struct GrowthEnd {
     double theta;         /**< its kink angle (rad, from ex, ey towards
                                the left normal -ey, ex) */
     int through;          /**< 1 once it grew out of every body: no more */
+    int stop;             /**< GrowthStop: why it grows no more */
+    int by;               /**< the crack that stopped it (or -1) */
+    long negative;        /**< decisions with J < -G_c / 10 (J does not
+                               hold on its domain: a kink, shut faces, an
+                               edge) */
     double Jsum;          /**< sum of J over the block so far */
     double Ksum[2];       /**< sums of K_I and K_II over it */
     long nsum;            /**< evaluations in it */
@@ -87,8 +100,13 @@ int crack_growth_prepare(Sim *sim, void *state, char *err, size_t errlen);
 /**
  * @brief Grow the tips whose fresh J (just evaluated) reaches G_c: at
  *        most one segment per tip, of GrowthSettings::length, at
- *        hoop_angle() from the tip's direction; then bring the crossing
+ *        hoop_angle() from the tip's direction (K_I < 0 counts as 0:
+ *        faces cannot pass through each other); then bring the crossing
  *        search and the J tips up to date, as after the cracks move.
+ *        A tip stops for good (GrowthEnd::stop) when its next segment
+ *        would cross or touch a crack (none is added), or when its new
+ *        widest J domain reaches out of the body or holds another crack
+ *        (J is then not path independent).
  * @return 0, or -1 with Sim::fail filled (no room left, a new point or
  *         its J domain outside the grid, search memory).
  */

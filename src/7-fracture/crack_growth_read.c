@@ -55,7 +55,7 @@ static int growth_fit(CrackGrowth *G, int index)
     G->end = e;
     memset(s + G->ncracks, 0, sizeof *s * (size_t)(index + 1 - G->ncracks));
     for (int k = 2 * G->ncracks; k < 2 * (index + 1); k++)
-        e[k] = (GrowthEnd){.last_step = -1};
+        e[k] = (GrowthEnd){.last_step = -1, .by = -1};
     G->ncracks = index + 1;
     return 0;
 }

@@ -11,7 +11,9 @@
  * degrees, cos = 0.6, sin = -0.8. The last point (7, 5) looks along +x
  * (left normal +y): its new point is (7 + 0.3, 5 - 0.4). The first point
  * (3, 5) looks along -x (left normal -y): its new point is (3 - 0.3,
- * 5 + 0.4). Bounds: 1e-12 mm.
+ * 5 + 0.4). Bounds: 1e-12 mm. The block reaches 0.5 mm from the grid's
+ * edges, so that the new tips' J domains (2 cells) stay inside it (a tip
+ * whose domain reaches out of the body stops growing).
  */
 #include "testkit.h"
 
@@ -25,7 +27,7 @@ static const char *const SCENE =
     "run = { time = 0.01; snapshots = 0; };\n"
     "materials = ( { name = \"gel\"; E = 0.1; nu = 0.33; rho = 1.5e-3; } );\n"
     "bodies = ( { name = \"block\"; material = \"gel\";\n"
-    "             rectangle = { min = [2.0, 2.0]; max = [8.0, 8.0]; }; } );\n"
+    "             rectangle = { min = [0.5, 0.5]; max = [9.5, 9.5]; }; } );\n"
     "cracks = ( { points = ( [3.0, 5.0], [7.0, 5.0] );\n"
     "             j_integral = { contours = [2]; };\n"
     "             growth = { G_c = 1e-4; length = 0.5; max_segments = 3; }; } );\n";
