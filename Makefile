@@ -21,12 +21,14 @@ SHELL := /bin/bash
 CC ?= cc
 WARN := -std=c11 -Wall -Wextra -Werror -Wshadow -Wmissing-prototypes -Wundef \
         -D_POSIX_C_SOURCE=200809L
-CFLAGS_release := $(WARN) -O2 -g
-CFLAGS_asan := $(WARN) -O1 -g -fno-omit-frame-pointer \
+# OpenMP (GCC's libgomp) for the loops that run on several threads
+OMP := -fopenmp
+CFLAGS_release := $(WARN) $(OMP) -O2 -g
+CFLAGS_asan := $(WARN) $(OMP) -O1 -g -fno-omit-frame-pointer \
                -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all
 LDFLAGS_release :=
 LDFLAGS_asan := -fsanitize=address,undefined,float-cast-overflow
-LIBS := -lconfig -lm
+LIBS := -lconfig -lm $(OMP)
 # a stage's folder names the libraries its code needs in a file `libs`
 # (src/6-xefg/libs: LAPACKE, for small dense systems); stage N links those
 # of folders 1..N
@@ -169,7 +171,7 @@ FUZZ_SECONDS ?= 600
 FUZZ_JOBS ?= 2
 FUZZ_CC := clang
 FUZZ_SAN := -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all
-CFLAGS_fuzz := $(WARN) -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer-no-link $(FUZZ_SAN)
+CFLAGS_fuzz := $(WARN) $(OMP) -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer-no-link $(FUZZ_SAN)
 FUZZ_OBJ := $(patsubst src/%.c,build/fuzz/obj/%.o,$(filter-out %/main.c,$(OBJ_release_$(LAST):build/stage$(LAST)/obj/%.o=src/%.c)))
 REPLAY := build/stage$(LAST)/tests/fuzz/replay build/asan/stage$(LAST)/tests/fuzz/replay
 

@@ -13,8 +13,8 @@ case "$job" in
   test) want="$base" ;;
   figures) want="$base gnuplot-nox valgrind" ;;
   docs) want="doxygen libjs-mathjax gnuplot-nox valgrind $base" ;;
-  fuzz) want="$base clang libclang-rt-14-dev" ;;
-  all) want="$base gnuplot-nox valgrind doxygen libjs-mathjax clang libclang-rt-14-dev" ;;
+  fuzz) want="$base clang libclang-rt-14-dev libomp-14-dev" ;;
+  all) want="$base gnuplot-nox valgrind doxygen libjs-mathjax clang libclang-rt-14-dev libomp-14-dev" ;;
   *) echo "usage: sh tools/deps.sh test|figures|docs|fuzz|all" >&2; exit 2 ;;
 esac
 

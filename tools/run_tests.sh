@@ -110,8 +110,13 @@ run_job() {
   make_folder "$dir"
   local start rc secs
   start=$(date +%s)
-  # a subshell, so that cd applies to this program alone
-  (cd "$dir" && MPM_BIN=$bin exec "$prog") >"$log" 2>&1 </dev/null
+  # a subshell, so that cd applies to this program alone; JOBS programs
+  # share the cores, so each runs one thread unless the caller says
+  # otherwise (a scene's run.threads still wins), and threads that wait
+  # sleep rather than spin
+  (cd "$dir" && OMP_NUM_THREADS=${OMP_NUM_THREADS:-1} \
+      OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive} MPM_BIN=$bin exec "$prog") \
+      >"$log" 2>&1 </dev/null
   rc=$?
   secs=$(( $(date +%s) - start ))
   if [ $kind = fail ]; then

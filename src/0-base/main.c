@@ -192,10 +192,11 @@ static int load_and_run(Sim *sim, Args *a)
     const Method *method = sim->scene.run.method;
     int mpm = method_reads(method, "run.update");  /* an update scheme */
     printf("mpm (stage %d): %s: %d points, grid %d x %d cells, dt = %.6g %s, "
-           "%ld steps, %s %s\n", mpm_stage(), a->scene, sim->pts.n,
+           "%ld steps, %s %s, %d thread%s\n", mpm_stage(), a->scene, sim->pts.n,
            sim->scene.ncx, sim->scene.ncy, sim->dt, sim->scene.run.units->time,
            sim->nsteps, mpm ? "update" : "method",
-           mpm ? sim->scene.run.scheme->name : method->name);
+           mpm ? sim->scene.run.scheme->name : method->name, sim->threads,
+           sim->threads == 1 ? "" : "s");
     fflush(stdout);
     RunOptions opt = {!a->quiet, a->restart, a->stop_at, &stop_signal};
     rc = sim_run(sim, a->outdir, &opt);

@@ -128,6 +128,8 @@ typedef struct RunSettings {
                              "full"); 0: the usual 9 to 12 */
     int binary;         /**< snapshots and the final points as binary .vtu
                              (run.output = "binary"); 0: text ("ascii") */
+    int threads;        /**< run.threads; 0: not given (OMP_NUM_THREADS,
+                             or every core) */
     int objective;      /**< rotate stress and strain by each increment's
                              spin (run.stress_rate = "jaumann"); 0: the
                              paper's eq. 35-36, unrotated */

@@ -7,6 +7,7 @@
 #include "scene_load.h"
 
 #include <libconfig.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -64,6 +65,9 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
         snprintf(err, errlen, "%s: out of memory", name);
         return -1;
     }
+    /* the scene's threads win over OMP_NUM_THREADS (OpenMP's default) */
+    sim->threads = sim->scene.run.threads ? sim->scene.run.threads
+                                          : omp_get_max_threads();
     sim_set_time_step(sim);
     return sim_check_time_step(sim, err, errlen);
 }

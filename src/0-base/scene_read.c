@@ -410,7 +410,7 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
     int st;
     const config_setting_t *g = group_of(r, root, "run", 1, &st);
     RunSettings *run = &sim->scene.run;
-    double gr[2] = {0, 0}, snaps, hist, ckpt;
+    double gr[2] = {0, 0}, snaps, hist, ckpt, threads;
     const char *update = "musl", *plane = "stress", *method = "mpm";
     const char *rate = "unrotated", *precision = "usual", *units = "mm-g-ms";
     const char *output = "ascii";
@@ -424,6 +424,7 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         scene_number(r, g, "snapshots", 0, 10, &snaps) < 0 ||
         scene_number(r, g, "history_every", 0, 0, &hist) < 0 ||
         scene_number(r, g, "checkpoint_every", 0, 0, &ckpt) < 0 ||
+        scene_number(r, g, "threads", 0, 0, &threads) < 0 ||
         scene_string(r, g, "update", 0, &update) < 0 ||
         scene_string(r, g, "method", 0, &method) < 0 ||
         scene_string(r, g, "plane", 0, &plane) < 0 ||
@@ -443,6 +444,13 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         return scene_error(r, config_setting_get_member(g, "precision"),
                            "precision", "\"%s\": expected \"usual\" (10 "
                            "significant digits) or \"full\" (17)", precision);
+    if (config_setting_get_member(g, "threads") &&
+        !(threads >= 1 && threads <= 1024 && threads == floor(threads)))
+        return scene_error(r, config_setting_get_member(g, "threads"), "threads",
+                           "%g: expected a whole number of threads from 1 to "
+                           "1024 (leave it out for OMP_NUM_THREADS, or every "
+                           "core)", threads);
+    run->threads = (int)threads;
     if (strcmp(output, "ascii") == 0 || strcmp(output, "binary") == 0)
         run->binary = output[0] == 'b';
     else

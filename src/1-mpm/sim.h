@@ -60,6 +60,9 @@ typedef struct Sim {
     uint64_t scene_hash; /**< fingerprint of the settings (checkpoint.h) */
     size_t memory_limit; /**< bytes a scene may need (footprint.h), set
                               before loading; 0: the memory available */
+    int threads;        /**< threads the parallel loops use: run.threads,
+                             else OpenMP's default (OMP_NUM_THREADS, or
+                             every core); set when a scene is loaded */
 } Sim;
 
 /** Quantities that history.csv records at one instant. */

@@ -57,22 +57,26 @@ void xefg_internal_force(const Xefg *x, const double *gs, double *f)
         gauss_scatter(&x->gauss, g, x->gw[g], gs + 3 * g, f);
 }
 
+/// [xefg_threads]
 void xefg_strain_update(const Xefg *x, const Sim *sim, const double *du,
                         double *gs, double *ge)
 {
+    /* each Gauss point writes its own stress and strain only: the same
+       bits on any number of threads */
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
     for (int g = 0; g < x->ngauss; g++)
         gauss_update(x, sim, g, du, gs + 3 * g, ge ? ge + 3 * g : NULL);
 }
+/// [xefg_threads]
 
 /// [xefg_update_and_force]
 void xefg_update_and_force(const Xefg *x, const Sim *sim, const double *du,
                            double *f)
 {
+    xefg_strain_update(x, sim, du, x->gs, x->ge);   /* on the threads */
     memset(f, 0, 2 * sizeof(double) * (size_t)x->ndof);
-    for (int g = 0; g < x->ngauss; g++) {
-        gauss_update(x, sim, g, du, x->gs + 3 * g, x->ge + 3 * g);
+    for (int g = 0; g < x->ngauss; g++)           /* in order: the same sums */
         gauss_scatter(&x->gauss, g, x->gw[g], x->gs + 3 * g, f);
-    }
     if (x->coh)                                     /* the crack's tractions */
         cohesive_force(x->coh, x->u, f, 1);
 }
