@@ -68,7 +68,8 @@ for s in $STAGES; do
                 "$dir/stage$s/mpm" "$scene" -q -o "$out/o" run.update="$scheme" \
                     run.time="$t" run.snapshots=2 >"$out/stdout" 2>"$out/stderr"
                 echo "exit $?" >>"$out/stderr"
-                sed -i -e '/particle-steps\/s/d' -e '/^mpm: energy /d' -e "s#$out#OUT#g" "$out/stdout" "$out/stderr"
+                sed -i -e '/particle-steps\/s/d' -e '/^mpm: energy /d' -e 's/, [0-9]* threads*$//' \
+                    -e "s#$out#OUT#g" "$out/stdout" "$out/stderr"
             done
             if [ "$(tail -1 "$WORK/A/stderr")" = "exit 1" ] &&
                [ "$(tail -1 "$WORK/B/stderr")" = "exit 0" ]; then
