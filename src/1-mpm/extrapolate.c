@@ -30,8 +30,8 @@ static void add_point_loads(Sim *sim)
         load_point_force(L, sim->t, &fx, &fy);
         for (int k = 0; k < L->count; k++) {
             Stencil st;
-            stencil_of_point(sim, L->points[k], &st);
-            for (int a = 0; a < STENCIL_NODES; a++) {
+            int n = stencil_of_point(sim, L->points[k], &st);
+            for (int a = 0; a < n; a++) {
                 g->fx[st.slot[a]] += fx * st.S[a];
                 g->fy[st.slot[a]] += fy * st.S[a];
             }
@@ -46,11 +46,11 @@ void extrapolate(Sim *sim, unsigned what)
     Grid *g = &sim->grid;
     for (int p = 0; p < P->n; p++) {
         Stencil st;
-        stencil_of_point(sim, p, &st);
+        int n = stencil_of_point(sim, p, &st);
         /* one loop for each case, so that the test is not made per node */
         if (what & EXTRAP_MASS) {
             double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
-            for (int a = 0; a < STENCIL_NODES; a++) {
+            for (int a = 0; a < n; a++) {
                 int s = st.slot[a];
                 g->m[s] += mp * st.S[a];                /* eq. 26 */
                 g->px[s] += qx * st.S[a];
@@ -58,7 +58,7 @@ void extrapolate(Sim *sim, unsigned what)
             }
         } else if (what & EXTRAP_MOMENTUM) {            /* eq. 31 */
             double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
-            for (int a = 0; a < STENCIL_NODES; a++) {
+            for (int a = 0; a < n; a++) {
                 int s = st.slot[a];
                 g->px[s] += qx * st.S[a];
                 g->py[s] += qy * st.S[a];
@@ -67,7 +67,7 @@ void extrapolate(Sim *sim, unsigned what)
         if (what & EXTRAP_FORCE) {
             double v = P->vol[p];                       /* m_p / rho_p */
             double sxx = P->sxx[p], syy = P->syy[p], sxy = P->sxy[p];
-            for (int a = 0; a < STENCIL_NODES; a++) {   /* eq. 28 */
+            for (int a = 0; a < n; a++) {   /* eq. 28 */
                 int s = st.slot[a];
                 g->fx[s] -= v * (sxx * st.Gx[a] + sxy * st.Gy[a]);
                 g->fy[s] -= v * (sxy * st.Gx[a] + syy * st.Gy[a]);

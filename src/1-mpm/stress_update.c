@@ -30,9 +30,9 @@ static void rotate_with_spin(Sim *sim, double dt_star)
     const Grid *g = &sim->grid;
     for (int p = 0; p < P->n; p++) {
         Stencil st;
-        stencil_of_point(sim, p, &st);
+        int n = stencil_of_point(sim, p, &st);
         double spin = 0.0;
-        for (int a = 0; a < STENCIL_NODES; a++)
+        for (int a = 0; a < n; a++)
             spin += g->vy[st.slot[a]] * st.Gx[a] - g->vx[st.slot[a]] * st.Gy[a];
         double h = 0.25 * dt_star * spin, d = 1.0 / (1.0 + h * h);
         double c = (1.0 - h * h) * d, sn = 2.0 * h * d;
@@ -61,9 +61,9 @@ int update_stress(Sim *sim, double dt_star)
         rotate_with_spin(sim, dt_star);
     for (int p = 0; p < P->n; p++) {
         Stencil st;
-        stencil_of_point(sim, p, &st);
+        int n = stencil_of_point(sim, p, &st);
         double dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
-        for (int a = 0; a < STENCIL_NODES; a++) {  /* L_p = sum v_i (x) G_ip */
+        for (int a = 0; a < n; a++) {  /* L_p = sum v_i (x) G_ip */
             int s = st.slot[a];
             dudx += g->vx[s] * st.Gx[a];
             dudy += g->vx[s] * st.Gy[a];

@@ -16,9 +16,9 @@ int update_points(Sim *sim)
     int rc = 0;
     for (int p = 0; p < P->n; p++) {
         Stencil st;
-        stencil_of_point(sim, p, &st);
+        int n = stencil_of_point(sim, p, &st);
         double ax = 0, ay = 0, vx = 0, vy = 0;
-        for (int a = 0; a < STENCIL_NODES; a++) {  /* each pair: its field */
+        for (int a = 0; a < n; a++) {  /* each pair: its field */
             int s = st.slot[a];
             ax += st.S[a] * g->ax[s];
             ay += st.S[a] * g->ay[s];
