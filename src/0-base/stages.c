@@ -87,7 +87,8 @@ void mpm_install_stages(Hooks *h)
 #if MPM_STAGE >= 8
     stage8_install(h);
 #else
-    hooks_add_refusal(h, "run.shape", "gimp", "stage 8 (GIMP shape functions)");
+    hooks_add_refusal(h, "run.shape", "gimp", "stage 8 (GIMP and CPDI shape functions)");
+    hooks_add_refusal(h, "run.shape", "cpdi", "stage 8 (GIMP and CPDI shape functions)");
 #endif
     hooks_begin_stage(h, 99);    /* a test's plug-in comes after every stage */
 }

@@ -8,7 +8,7 @@
 
 #include "hooks.h"
 
-/** @brief Register run.shape = "gimp" and its set-up check. */
+/** @brief Register run.shape = "gimp" and "cpdi" and their set-up. */
 void stage8_install(Hooks *h);
 
 #endif

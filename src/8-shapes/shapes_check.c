@@ -1,13 +1,14 @@
 /**
- * @file gimp_check.c
- * @brief The limits of uGIMP in this stage: the MPM step, one velocity
- *        field per node, and every domain inside the grid (a node off the
- *        grid would take a share of the point's mass).
+ * @file shapes_check.c
+ * @brief The limits of uGIMP and CPDI in this stage: the MPM step, one
+ *        velocity field per node, and every domain inside the grid (a node
+ *        off the grid would take a share of the point's mass).
  */
-#include "gimp_check.h"
+#include "shapes_check.h"
 
 #include <stdio.h>
 
+#include "cpdi.h"
 #include "gimp.h"
 #include "step.h"
 
@@ -41,27 +42,30 @@ int gimp_domains_inside(Sim *sim, void *state, Seam seam)
     return p < 0 ? 0 : step_fail(sim, p, "GIMP domain (left the grid)", at);
 }
 
-/// [gimp_prepare]
-int gimp_prepare(Sim *sim, void *state, char *err, size_t errlen)
+/// [shapes_prepare]
+int shapes_prepare(Sim *sim, void *state, char *err, size_t errlen)
 {
     const Scene *sc = &sim->scene;
     const Hooks *h = &sim->hooks;
+    const char *name = sc->run.shape ? sc->run.shape->name : "linear";
     double at;
     (void)state;
-    if (sc->run.shape != &shape_gimp)
+    if (sc->run.shape != &shape_gimp && sc->run.shape != &shape_cpdi)
         return 0;
     if (sc->run.method->step != sim_step) {
-        snprintf(err, errlen, "%s: run.shape = \"gimp\" needs run.method = "
+        snprintf(err, errlen, "%s: run.shape = \"%s\" needs run.method = "
                  "\"mpm\" (the method \"%s\" has its own shape functions)",
-                 sc->file, sc->run.method->name);
+                 sc->file, name, sc->run.method->name);
         return -1;
     }
     if (h->seam[SEAM_TASK1_FIELDS].n) {
-        snprintf(err, errlen, "%s: run.shape = \"gimp\" with cracks or contact "
+        snprintf(err, errlen, "%s: run.shape = \"%s\" with cracks or contact "
                  "between bodies (several velocity fields at a node) is not done "
-                 "yet (chapter 8): use run.shape = \"linear\"", sc->file);
+                 "yet (chapter 8): use run.shape = \"linear\"", sc->file, name);
         return -1;
     }
+    if (sc->run.shape == &shape_cpdi)
+        return cpdi_prepare(sim, err, errlen);
     int p = domain_outside(sim, &at);
     if (p >= 0) {
         snprintf(err, errlen, "%s: run.shape = \"gimp\": point %d (at %g) has "
@@ -75,4 +79,4 @@ int gimp_prepare(Sim *sim, void *state, char *err, size_t errlen)
     }
     return 0;
 }
-/// [gimp_prepare]
+/// [shapes_prepare]
