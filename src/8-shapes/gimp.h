@@ -26,7 +26,7 @@ double gimp_weight(double d, double l, double *G);
  *        local coordinates (@p xi, @p eta), half sizes @p lx, @p ly in
  *        cells: the 4, 6 or 9 nodes its domain reaches, row by row.
  *
- * A node off the grid is left out (its weight is lost: gimp_check keeps
+ * A node off the grid is left out (its weight is lost: shapes_check.c keeps
  * every domain inside the grid). Slots are the nodes (one field).
  */
 void gimp_stencil_cell(const Grid *g, int cell, double xi, double eta,
