@@ -1,33 +1,10 @@
 /**
  * @file gimp.c
- * @brief uGIMP weights and the stencil of a point (Bardenhagen & Kober
- *        2004, the undeformed particle domain).
+ * @brief The uGIMP stencil of a point (Bardenhagen & Kober 2004, the
+ *        undeformed particle domain): the nodes its domain reaches and
+ *        the products of the 1D weights of gimp_weight.c.
  */
 #include "gimp.h"
-
-#include <math.h>
-
-/// [gimp_weight]
-double gimp_weight(double d, double l, double *G)
-{
-    double r = fabs(d), sg = d < 0 ? -1.0 : 1.0;
-    if (r < l) {                        /* the node inside the domain */
-        *G = -d / l;
-        return 1.0 - (d * d + l * l) / (2.0 * l);
-    }
-    if (r <= 1.0 - l) {                 /* the domain on one side: linear */
-        *G = -sg;
-        return 1.0 - r;
-    }
-    if (r < 1.0 + l) {                  /* the domain over the hat's foot */
-        double e = 1.0 + l - r;
-        *G = -sg * e / (2.0 * l);
-        return e * e / (4.0 * l);
-    }
-    *G = 0.0;
-    return 0.0;
-}
-/// [gimp_weight]
 
 /** The first node column (row) a domain [u - l, u + l] of cell @p i
  *  reaches, and how many (2 or 3). */
