@@ -18,6 +18,10 @@
 struct Sim;
 struct Stencil;
 
+/** A stencil function: the nodes, S_ip, G_ip and Stencil::n of point
+ *  @p p (ShapeFunctions::stencil, RunSettings::stencil). */
+typedef void (*StencilFn)(const struct Sim *sim, int p, struct Stencil *st);
+
 /// [shape_functions]
 /** A row of the shape-function table, chosen by run.shape ("linear" is
  *  stage 1's; later stages add rows). */
@@ -27,7 +31,7 @@ typedef struct ShapeFunctions {
     /** Fill the stencil of point @p p (nodes, S_ip, G_ip and Stencil::n)
      *  from Task 0's cell and local coordinates; NULL: the bilinear
      *  functions, inline in stencil_of_point(). */
-    void (*stencil)(const struct Sim *sim, int p, struct Stencil *st);
+    StencilFn stencil;
 } ShapeFunctions;
 /// [shape_functions]
 

@@ -27,18 +27,13 @@ typedef struct Stencil {
     double Gy[STENCIL_MAX];   /**< gradients dS/dy */
 } Stencil;
 
-/** @brief The stencil of point @p p from its cell found in Task 0, with
- *         the field slots Task 1 gave its pairs; the scene's run.shape
- *         when it is not linear. @return the nodes in use, Stencil::n */
-static inline int stencil_of_point(const Sim *sim, int p, Stencil *st)
+/** @brief The bilinear stencil of point @p p from its cell found in Task
+ *         0, with the field slots Task 1 gave its pairs; Stencil::n is
+ *         left to the caller (it is STENCIL_NODES). */
+static inline void stencil_linear(const Sim *sim, int p, Stencil *st)
 {
     const Grid *g = &sim->grid;
     const FieldTable *F = &sim->fields;
-    if (sim->scene.run.stencil) {
-        sim->scene.run.stencil(sim, p, st); /* another row of run.shape */
-        return st->n;
-    }
-    st->n = STENCIL_NODES;
     shape_linear(sim->pts.xi[p], sim->pts.eta[p], g->idx, g->idy, st->S,
                  st->Gx, st->Gy);
     shape_cell_nodes(g, sim->pts.cell[p], st->slot);
@@ -48,7 +43,18 @@ static inline int stencil_of_point(const Sim *sim, int p, Stencil *st)
             for (int a = 0; a < STENCIL_NODES; a++)
                 st->slot[a] = F->row_slot[STENCIL_NODES * r + a];
     }
-    return STENCIL_NODES;
+}
+
+/** @brief The stencil of point @p p: run.shape's (linear unless the scene
+ *         chose another row). @return the nodes in use, Stencil::n */
+static inline int stencil_of_point(const Sim *sim, int p, Stencil *st)
+{
+    if (sim->scene.run.stencil) {
+        sim->scene.run.stencil(sim, p, st); /* another row of run.shape */
+        return st->n;
+    }
+    stencil_linear(sim, p, st);
+    return st->n = STENCIL_NODES;
 }
 /// [stencil]
 
