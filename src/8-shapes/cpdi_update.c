@@ -12,23 +12,38 @@
 
 #include "checkpoint.h"
 #include "cpdi.h"
+#include "gimp.h"
 #include "step.h"
 
 /** Why the domain of point @p p (half sides @p r1, @p r2 at its current
- *  position) cannot be used, or NULL. */
+ *  position) cannot be used, or NULL; *@p value: det F (the
+ *  area over the initial one) when inverted, the width in cells when too
+ *  wide, the position when off the grid. */
 static const char *domain_fault(const Sim *sim, int p, const double r1[2],
-                                const double r2[2])
+                                const double r2[2], double *value)
 {
     const Grid *g = &sim->grid;
-    if (!(r1[0] * r2[1] - r1[1] * r2[0] > 0.0))
-        return "CPDI domain (inverted: det F <= 0)";
+    double area = r1[0] * r2[1] - r1[1] * r2[0];
     double ex = fabs(r1[0]) + fabs(r2[0]), ey = fabs(r1[1]) + fabs(r2[1]);
     double x = sim->pts.x[p], y = sim->pts.y[p];
     double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
-    if (!(2.0 * ex < g->dx && 2.0 * ey < g->dy))
-        return "CPDI domain (wider than a cell)";
-    if (!(x - ex >= g->ox && x + ex <= xmax && y - ey >= g->oy && y + ey <= ymax))
-        return "CPDI domain (left the grid)";
+    double l = gimp_half(sim, p);
+    if (!(area > 0.0)) {
+        *value = area / (l * g->dx * l * g->dy);   /* det F */
+        return "CPDI domain (inverted: det F)";
+    }
+    if (!(2.0 * ex < g->dx && 2.0 * ey < g->dy)) {
+        *value = fmax(2.0 * ex * g->idx, 2.0 * ey * g->idy);
+        return "CPDI domain (wider than a cell: cells)";
+    }
+    if (!(x - ex >= g->ox && x + ex <= xmax)) {
+        *value = x;
+        return "CPDI domain x (left the grid)";
+    }
+    if (!(y - ey >= g->oy && y + ey <= ymax)) {
+        *value = y;
+        return "CPDI domain y (left the grid)";
+    }
     return NULL;
 }
 
@@ -59,11 +74,11 @@ static int cpdi_update(Sim *sim, void *state, Seam seam)
         f[3] = F[3] + dt * (L[2] * F[1] + L[3] * F[3]);
         for (int k = 0; k < 4; k++)
             F[k] = f[k];
-        double r1[2], r2[2];
+        double r1[2], r2[2], value;
         cpdi_vectors(sim, C, p, r1, r2);
-        const char *why = domain_fault(sim, p, r1, r2);
+        const char *why = domain_fault(sim, p, r1, r2, &value);
         if (why)
-            rc = step_fail(sim, p, why, f[0] * f[3] - f[1] * f[2]);
+            rc = step_fail(sim, p, why, value);
     }
     return rc;
 }
@@ -101,9 +116,9 @@ int cpdi_prepare(Sim *sim, char *err, size_t errlen)
     C->n = n;
     for (int p = 0; p < n; p++) {
         C->F[4 * p] = C->F[4 * p + 3] = 1.0;
-        double r1[2], r2[2];
+        double r1[2], r2[2], value;
         cpdi_vectors(sim, C, p, r1, r2);
-        const char *why = domain_fault(sim, p, r1, r2);
+        const char *why = domain_fault(sim, p, r1, r2, &value);
         if (why) {
             snprintf(err, errlen, "%s: run.shape = \"cpdi\": point %d at (%g, %g): "
                      "%s; add a cell of margin", file, p, sim->pts.x[p],
