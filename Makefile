@@ -4,7 +4,7 @@
 # include paths for those folders only, so a stage-1 file that reached for a
 # later stage's header would not compile.
 #
-#   make stage1 ... stage7   one solver per chapter
+#   make stage1 ... stage8   one solver per chapter
 #   make check               every stage's tests, sanitizer builds, exercises
 #   make docs                the book (Doxygen, warnings are errors)
 #   make figures | figN      the paper's figures, full size (build/figures/figN.png,

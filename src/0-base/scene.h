@@ -13,6 +13,10 @@
 #include "scene_include.h"
 #include "units.h"
 
+struct Sim;
+struct Stencil;
+struct ShapeFunctions;
+
 /** Kind of region a body fills. */
 typedef enum { SHAPE_RECTANGLE, SHAPE_DISK, SHAPE_POLYGON } ShapeKind;
 
@@ -133,6 +137,11 @@ typedef struct RunSettings {
     int objective;      /**< rotate stress and strain by each increment's
                              spin (run.stress_rate = "jaumann"); 0: the
                              paper's eq. 35-36, unrotated */
+    const struct ShapeFunctions *shape; /**< the shape functions (run.shape,
+                             a row of shape.h's table; NULL: linear) */
+    /** The stencil function of run.shape, NULL for the paper's bilinear
+     *  functions (computed inline by stencil_of_point()). */
+    void (*stencil)(const struct Sim *sim, int p, struct Stencil *st);
 } RunSettings;
 
 /** @brief The fraction of run.gravity acting at time @p t: t / ramp during

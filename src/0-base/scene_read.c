@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "scene_keys.h"
+#include "shape.h"
 #include "scene_text.h"
 
 /** The override that set @p s or a setting holding it (its text, kept as
@@ -414,6 +415,7 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
     const char *update = "musl", *plane = "stress", *method = "mpm";
     const char *rate = "unrotated", *precision = "usual", *units = "mm-g-ms";
     const char *output = "ascii";
+    const char *shape = "linear";
     if (!g ||
         scene_check_open_keys(r, &sim->hooks, "run", g, scene_run_keys, NULL) ||
         scene_number(r, g, "time", 1, 0, &run->time) < 0 ||
@@ -431,7 +433,8 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         scene_string(r, g, "stress_rate", 0, &rate) < 0 ||
         scene_string(r, g, "precision", 0, &precision) < 0 ||
         scene_string(r, g, "units", 0, &units) < 0 ||
-        scene_string(r, g, "output", 0, &output) < 0)
+        scene_string(r, g, "output", 0, &output) < 0 ||
+        scene_string(r, g, "shape", 0, &shape) < 0)
         return -1;
     run->units = units_find(units);
     if (!run->units)
@@ -460,8 +463,11 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
                            "particles_final.csv) or \"binary\" (binary "
                            ".vtu for all three)", output);
     if (scene_choice(r, &sim->hooks, g, "run", "method", method,
-                     (const void **)&run->method))
+                     (const void **)&run->method) ||
+        scene_choice(r, &sim->hooks, g, "run", "shape", shape,
+                     (const void **)&run->shape))
         return -1;
+    run->stencil = run->shape->stencil;
     const config_setting_t *ins = config_setting_get_member(g, "allow_cfl_above_one");
     if (ins && config_setting_type(ins) != CONFIG_TYPE_BOOL)
         return scene_error(r, ins, "allow_cfl_above_one", "expected true or false");

@@ -30,6 +30,9 @@
 #if MPM_STAGE >= 7
 #include "stage7.h"
 #endif
+#if MPM_STAGE >= 8
+#include "stage8.h"
+#endif
 
 /// [install_stages]
 void mpm_install_stages(Hooks *h)
@@ -79,6 +82,13 @@ void mpm_install_stages(Hooks *h)
 #else
     hooks_add_refusal(h, "cracks.j_integral", NULL, "stage 7 (fracture parameters)");
     hooks_add_refusal(h, "cracks.growth", NULL, "stage 7 (crack growth)");
+#endif
+    hooks_begin_stage(h, 8);
+#if MPM_STAGE >= 8
+    stage8_install(h);
+#else
+    hooks_add_refusal(h, "run.shape", "gimp", "stage 8 (GIMP and CPDI shape functions)");
+    hooks_add_refusal(h, "run.shape", "cpdi", "stage 8 (GIMP and CPDI shape functions)");
 #endif
     hooks_begin_stage(h, 99);    /* a test's plug-in comes after every stage */
 }

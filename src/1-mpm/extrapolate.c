@@ -30,8 +30,8 @@ static void add_point_loads(Sim *sim)
         load_point_force(L, sim->t, &fx, &fy);
         for (int k = 0; k < L->count; k++) {
             Stencil st;
-            stencil_of_point(sim, L->points[k], &st);
-            for (int a = 0; a < STENCIL_NODES; a++) {
+            int n = stencil_of_point(sim, L->points[k], &st);
+            for (int a = 0; a < n; a++) {
                 g->fx[st.slot[a]] += fx * st.S[a];
                 g->fy[st.slot[a]] += fy * st.S[a];
             }
@@ -40,40 +40,57 @@ static void add_point_loads(Sim *sim)
 }
 
 /// [extrapolate]
+/** One point's share of Tasks 1 and 3 over the @p n nodes of its stencil:
+ *  mass and momentum (eq. 26), or momentum only (eq. 31), and force
+ *  (eq. 28), as @p what asks. */
+static inline void scatter_point(const Particles *P, Grid *g, int p,
+                                 const Stencil *st, int n, unsigned what)
+{
+    /* one loop for each case, so that the test is not made per node */
+    if (what & EXTRAP_MASS) {
+        double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
+        for (int a = 0; a < n; a++) {
+            int s = st->slot[a];
+            g->m[s] += mp * st->S[a];                   /* eq. 26 */
+            g->px[s] += qx * st->S[a];
+            g->py[s] += qy * st->S[a];
+        }
+    } else if (what & EXTRAP_MOMENTUM) {                /* eq. 31 */
+        double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
+        for (int a = 0; a < n; a++) {
+            int s = st->slot[a];
+            g->px[s] += qx * st->S[a];
+            g->py[s] += qy * st->S[a];
+        }
+    }
+    if (what & EXTRAP_FORCE) {
+        double v = P->vol[p];                           /* m_p / rho_p */
+        double sxx = P->sxx[p], syy = P->syy[p], sxy = P->sxy[p];
+        for (int a = 0; a < n; a++) {                   /* eq. 28 */
+            int s = st->slot[a];
+            g->fx[s] -= v * (sxx * st->Gx[a] + sxy * st->Gy[a]);
+            g->fy[s] -= v * (sxy * st->Gx[a] + syy * st->Gy[a]);
+        }
+    }
+}
+
 void extrapolate(Sim *sim, unsigned what)
 {
     const Particles *P = &sim->pts;
     Grid *g = &sim->grid;
-    for (int p = 0; p < P->n; p++) {
-        Stencil st;
-        stencil_of_point(sim, p, &st);
-        /* one loop for each case, so that the test is not made per node */
-        if (what & EXTRAP_MASS) {
-            double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
-            for (int a = 0; a < STENCIL_NODES; a++) {
-                int s = st.slot[a];
-                g->m[s] += mp * st.S[a];                /* eq. 26 */
-                g->px[s] += qx * st.S[a];
-                g->py[s] += qy * st.S[a];
-            }
-        } else if (what & EXTRAP_MOMENTUM) {            /* eq. 31 */
-            double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
-            for (int a = 0; a < STENCIL_NODES; a++) {
-                int s = st.slot[a];
-                g->px[s] += qx * st.S[a];
-                g->py[s] += qy * st.S[a];
-            }
+    StencilFn wide = sim->scene.run.stencil;
+    if (!wide)                          /* the paper's four nodes */
+        for (int p = 0; p < P->n; p++) {
+            Stencil st;
+            stencil_linear(sim, p, &st);
+            scatter_point(P, g, p, &st, STENCIL_NODES, what);
         }
-        if (what & EXTRAP_FORCE) {
-            double v = P->vol[p];                       /* m_p / rho_p */
-            double sxx = P->sxx[p], syy = P->syy[p], sxy = P->sxy[p];
-            for (int a = 0; a < STENCIL_NODES; a++) {   /* eq. 28 */
-                int s = st.slot[a];
-                g->fx[s] -= v * (sxx * st.Gx[a] + sxy * st.Gy[a]);
-                g->fy[s] -= v * (sxy * st.Gx[a] + syy * st.Gy[a]);
-            }
+    else                                /* another row of run.shape */
+        for (int p = 0; p < P->n; p++) {
+            Stencil st;
+            wide(sim, p, &st);
+            scatter_point(P, g, p, &st, st.n, what);
         }
-    }
     if (what & EXTRAP_FORCE)
         add_point_loads(sim);
 }

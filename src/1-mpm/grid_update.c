@@ -129,11 +129,12 @@ void grid_prescribe(Sim *sim, Seam seam)
         double v0[2], v[2];
         hold_velocity(&H->hold, t0, v0);
         hold_velocity(&H->hold, t, v);
-        for (int j = 0; j < H->count; j++) {
-            int node[STENCIL_NODES];
-            stencil_nodes(sim, H->points[j], node);
-            for (int a = 0; a < STENCIL_NODES; a++)
-                hold_node(g, F, node[a], H->hold.fix, v0, v, task4, sim->dt);
+        for (int j = 0; j < H->count; j++) {   /* every node it reaches */
+            Stencil st;
+            stencil_of_point(sim, H->points[j], &st);
+            for (int a = 0; a < st.n; a++)
+                hold_node(g, F, grid_slot_node(g, st.slot[a]), H->hold.fix, v0,
+                          v, task4, sim->dt);
         }
     }
 }

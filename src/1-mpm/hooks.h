@@ -27,7 +27,7 @@ struct Sim;
 struct SceneReader;
 
 /** Most entries of each registry and subscribers of each seam. */
-#define HOOKS_MAX 16
+#define HOOKS_MAX 32
 /** How many stages may describe their output files (Hooks::outputs). */
 #define HOOKS_MAX_OUTPUTS 8
 

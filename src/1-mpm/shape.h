@@ -10,6 +10,30 @@
 
 /** Nodes a point's shape functions reach (bilinear: the cell's four). */
 #define STENCIL_NODES 4
+/** Most nodes any row of the shape-function table reaches: 3 x 3 for a
+ *  point whose domain is at most a cell wide (uGIMP, chapter 8). A
+ *  stencil holds this many; its count Stencil::n says how many are used. */
+#define STENCIL_MAX 9
+
+struct Sim;
+struct Stencil;
+
+/** A stencil function: the nodes, S_ip, G_ip and Stencil::n of point
+ *  @p p (ShapeFunctions::stencil, RunSettings::stencil). */
+typedef void (*StencilFn)(const struct Sim *sim, int p, struct Stencil *st);
+
+/// [shape_functions]
+/** A row of the shape-function table, chosen by run.shape ("linear" is
+ *  stage 1's; later stages add rows). */
+typedef struct ShapeFunctions {
+    const char *name;   /**< the value of run.shape */
+    int nodes;          /**< most nodes one point reaches (<= STENCIL_MAX) */
+    /** Fill the stencil of point @p p (nodes, S_ip, G_ip and Stencil::n)
+     *  from Task 0's cell and local coordinates; NULL: the bilinear
+     *  functions, inline in stencil_of_point(). */
+    StencilFn stencil;
+} ShapeFunctions;
+/// [shape_functions]
 
 /// [shape_linear]
 /**

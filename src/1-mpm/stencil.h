@@ -5,8 +5,9 @@
  *        each pair (Task 0 and Task 1's v(p,i)).
  *
  * Every loop between points and grid reads a point's stencil and nothing
- * else of the shape functions, so a chapter that brings other shape
- * functions (GIMP, CPDI) changes this file and shape.c only.
+ * else of the shape functions, and runs over its Stencil::n nodes, so a
+ * chapter that brings other shape functions (GIMP, chapter 8) adds a row
+ * to the table of run.shape (shape.h) and changes no loop.
  */
 #ifndef MPM_STENCIL_H
 #define MPM_STENCIL_H
@@ -19,15 +20,17 @@
  *  index, field 0) unless Task 1 gave the pair another field; the node of
  *  any slot is grid_slot_node(). */
 typedef struct Stencil {
-    int slot[STENCIL_NODES];  /**< the nodes, as the field slot of each pair */
-    double S[STENCIL_NODES];  /**< shape function values S_ip */
-    double Gx[STENCIL_NODES]; /**< gradients dS/dx */
-    double Gy[STENCIL_NODES]; /**< gradients dS/dy */
+    int n;                    /**< nodes in use (STENCIL_NODES when linear) */
+    int slot[STENCIL_MAX];    /**< the nodes, as the field slot of each pair */
+    double S[STENCIL_MAX];    /**< shape function values S_ip */
+    double Gx[STENCIL_MAX];   /**< gradients dS/dx */
+    double Gy[STENCIL_MAX];   /**< gradients dS/dy */
 } Stencil;
 
-/** @brief The stencil of point @p p from its cell found in Task 0, with
- *         the field slots Task 1 gave its pairs. */
-static inline void stencil_of_point(const Sim *sim, int p, Stencil *st)
+/** @brief The bilinear stencil of point @p p from its cell found in Task
+ *         0, with the field slots Task 1 gave its pairs; Stencil::n is
+ *         left to the caller (it is STENCIL_NODES). */
+static inline void stencil_linear(const Sim *sim, int p, Stencil *st)
 {
     const Grid *g = &sim->grid;
     const FieldTable *F = &sim->fields;
@@ -41,6 +44,18 @@ static inline void stencil_of_point(const Sim *sim, int p, Stencil *st)
                 st->slot[a] = F->row_slot[STENCIL_NODES * r + a];
     }
 }
+
+/** @brief The stencil of point @p p: run.shape's (linear unless the scene
+ *         chose another row). @return the nodes in use, Stencil::n */
+static inline int stencil_of_point(const Sim *sim, int p, Stencil *st)
+{
+    if (sim->scene.run.stencil) {
+        sim->scene.run.stencil(sim, p, st); /* another row of run.shape */
+        return st->n;
+    }
+    stencil_linear(sim, p, st);
+    return st->n = STENCIL_NODES;
+}
 /// [stencil]
 
 /** @brief The stencil of a position: nodes and shape functions; every
@@ -49,11 +64,14 @@ static inline void stencil_at(const Grid *g, double x, double y, Stencil *st)
 {
     double xi, eta;
     int cell = shape_locate(g, x, y, &xi, &eta);
+    st->n = STENCIL_NODES;
     shape_linear(xi, eta, g->idx, g->idy, st->S, st->Gx, st->Gy);
     shape_cell_nodes(g, cell, st->slot);
 }
 
-/** @brief The nodes of point @p p's stencil (Task 1 needs no more). */
+/** @brief The nodes of point @p p's linear stencil, its cell's four (Task
+ *         1 needs no more: the stages that key fields run with linear
+ *         shape functions only, chapter 8). */
 static inline void stencil_nodes(const Sim *sim, int p, int node[STENCIL_NODES])
 {
     shape_cell_nodes(&sim->grid, sim->pts.cell[p], node);

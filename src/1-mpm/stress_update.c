@@ -19,72 +19,107 @@ static void rotate_by(double c, double s, double t[3])
     t[2] = c * s * (xx - yy) + (c * c - s * s) * xy;
 }
 
-/** The objective rate (run.stress_rate = "jaumann"): turn each point's
- *  stress and strain with the spin of the same nodal velocities that give
- *  its strain increment, w = 1/2 (v,x - u,y) dt, by the rotation
- *  (I - W/2)^-1 (I + W/2) (angle 2 atan(w/2)). A pass of its own, so that
- *  the paper's update costs nothing more. */
-static void rotate_with_spin(Sim *sim, double dt_star)
+/** Turn point @p p's stress and strain by the spin of the nodal velocities
+ *  over the @p n nodes of its stencil, w = 1/2 (v,x - u,y) dt, by the
+ *  rotation (I - W/2)^-1 (I + W/2) (angle 2 atan(w/2)). */
+static inline void rotate_point(Sim *sim, int p, const Stencil *st, int n,
+                                double dt_star)
 {
     Particles *P = &sim->pts;
     const Grid *g = &sim->grid;
-    for (int p = 0; p < P->n; p++) {
-        Stencil st;
-        stencil_of_point(sim, p, &st);
-        double spin = 0.0;
-        for (int a = 0; a < STENCIL_NODES; a++)
-            spin += g->vy[st.slot[a]] * st.Gx[a] - g->vx[st.slot[a]] * st.Gy[a];
-        double h = 0.25 * dt_star * spin, d = 1.0 / (1.0 + h * h);
-        double c = (1.0 - h * h) * d, sn = 2.0 * h * d;
-        double s[3] = {P->sxx[p], P->syy[p], P->sxy[p]};
-        double e[3] = {P->exx[p], P->eyy[p], P->exy[p]};
-        rotate_by(c, sn, s);
-        rotate_by(c, sn, e);
-        P->sxx[p] = s[0];
-        P->syy[p] = s[1];
-        P->sxy[p] = s[2];
-        P->exx[p] = e[0];
-        P->eyy[p] = e[1];
-        P->exy[p] = e[2];
-    }
+    double spin = 0.0;
+    for (int a = 0; a < n; a++)
+        spin += g->vy[st->slot[a]] * st->Gx[a] - g->vx[st->slot[a]] * st->Gy[a];
+    double h = 0.25 * dt_star * spin, d = 1.0 / (1.0 + h * h);
+    double c = (1.0 - h * h) * d, sn = 2.0 * h * d;
+    double s[3] = {P->sxx[p], P->syy[p], P->sxy[p]};
+    double e[3] = {P->exx[p], P->eyy[p], P->exy[p]};
+    rotate_by(c, sn, s);
+    rotate_by(c, sn, e);
+    P->sxx[p] = s[0];
+    P->syy[p] = s[1];
+    P->sxy[p] = s[2];
+    P->exx[p] = e[0];
+    P->eyy[p] = e[1];
+    P->exy[p] = e[2];
+}
+
+/** The objective rate (run.stress_rate = "jaumann"): turn each point's
+ *  stress and strain with the spin of the same nodal velocities that give
+ *  its strain increment. A pass of its own, so that the paper's update
+ *  costs nothing more. */
+static void rotate_with_spin(Sim *sim, double dt_star)
+{
+    StencilFn wide = sim->scene.run.stencil;
+    if (!wide)                          /* the paper's four nodes */
+        for (int p = 0; p < sim->pts.n; p++) {
+            Stencil st;
+            stencil_linear(sim, p, &st);
+            rotate_point(sim, p, &st, STENCIL_NODES, dt_star);
+        }
+    else                                /* another row of run.shape */
+        for (int p = 0; p < sim->pts.n; p++) {
+            Stencil st;
+            wide(sim, p, &st);
+            rotate_point(sim, p, &st, st.n, dt_star);
+        }
 }
 /// [rotate_with_spin]
 
 /// [update_stress]
-int update_stress(Sim *sim, double dt_star)
+/** Point @p p's strain increment from the nodal velocities over the @p n
+ *  nodes of its stencil (eq. 34-35) and its material's stress update
+ *  (eq. 36): 0, or -1 with a non-finite stress recorded. */
+static inline int strain_point(Sim *sim, int p, const Stencil *st, int n,
+                               double dt_star)
 {
     Particles *P = &sim->pts;
     const Grid *g = &sim->grid;
-    const Material *mats = sim->scene.mat;
+    double dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
+    for (int a = 0; a < n; a++) {      /* L_p = sum v_i (x) G_ip */
+        int s = st->slot[a];
+        dudx += g->vx[s] * st->Gx[a];
+        dudy += g->vx[s] * st->Gy[a];
+        dvdx += g->vy[s] * st->Gx[a];
+        dvdy += g->vy[s] * st->Gy[a];
+    }
+    double dexx = dt_star * dudx, deyy = dt_star * dvdy;
+    double dexy = 0.5 * dt_star * (dudy + dvdx);        /* eq. 35 */
+    P->exx[p] += dexx;
+    P->eyy[p] += deyy;
+    P->exy[p] += dexy;
+    const Material *mat = &sim->scene.mat[P->mat[p]];
+    double s[3] = {P->sxx[p], P->syy[p], P->sxy[p]};
+    mat->law->stress(mat, dexx, deyy, dexy, s);         /* eq. 36 */
+    P->sxx[p] = s[0];
+    P->syy[p] = s[1];
+    P->sxy[p] = s[2];
+    if (!isfinite(s[0] + s[1] + s[2]))
+        return step_fail(sim, p, "stress",
+                         !isfinite(s[0]) ? s[0] : !isfinite(s[1]) ? s[1] : s[2]);
+    return 0;
+}
+
+int update_stress(Sim *sim, double dt_star)
+{
+    StencilFn wide = sim->scene.run.stencil;
     int rc = 0;
     if (sim->scene.run.objective)
         rotate_with_spin(sim, dt_star);
-    for (int p = 0; p < P->n; p++) {
-        Stencil st;
-        stencil_of_point(sim, p, &st);
-        double dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
-        for (int a = 0; a < STENCIL_NODES; a++) {  /* L_p = sum v_i (x) G_ip */
-            int s = st.slot[a];
-            dudx += g->vx[s] * st.Gx[a];
-            dudy += g->vx[s] * st.Gy[a];
-            dvdx += g->vy[s] * st.Gx[a];
-            dvdy += g->vy[s] * st.Gy[a];
+    if (!wide)                          /* the paper's four nodes */
+        for (int p = 0; p < sim->pts.n; p++) {
+            Stencil st;
+            stencil_linear(sim, p, &st);
+            if (strain_point(sim, p, &st, STENCIL_NODES, dt_star))
+                rc = -1;
         }
-        double dexx = dt_star * dudx, deyy = dt_star * dvdy;
-        double dexy = 0.5 * dt_star * (dudy + dvdx);    /* eq. 35 */
-        P->exx[p] += dexx;
-        P->eyy[p] += deyy;
-        P->exy[p] += dexy;
-        const Material *mat = &mats[P->mat[p]];
-        double s[3] = {P->sxx[p], P->syy[p], P->sxy[p]};
-        mat->law->stress(mat, dexx, deyy, dexy, s);     /* eq. 36 */
-        P->sxx[p] = s[0];
-        P->syy[p] = s[1];
-        P->sxy[p] = s[2];
-        if (!isfinite(s[0] + s[1] + s[2]))
-            rc = step_fail(sim, p, "stress",
-                           !isfinite(s[0]) ? s[0] : !isfinite(s[1]) ? s[1] : s[2]);
-    }
+    else                                /* another row of run.shape */
+        for (int p = 0; p < sim->pts.n; p++) {
+            Stencil st;
+            wide(sim, p, &st);
+            if (strain_point(sim, p, &st, st.n, dt_star))
+                rc = -1;
+        }
     return rc;
 }
 /// [update_stress]

@@ -7,37 +7,56 @@
 #include "step.h"
 
 /// [update_points]
-int update_points(Sim *sim)
+/** Task 5 for point @p p over the @p n nodes of its stencil (eq. 30):
+ *  0, or -1 with the instability recorded. */
+static inline int move_point(Sim *sim, int p, const Stencil *st, int n,
+                             double xmax, double ymax)
 {
     Particles *P = &sim->pts;
     const Grid *g = &sim->grid;
-    double dt = sim->dt;
-    double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
-    int rc = 0;
-    for (int p = 0; p < P->n; p++) {
-        Stencil st;
-        stencil_of_point(sim, p, &st);
-        double ax = 0, ay = 0, vx = 0, vy = 0;
-        for (int a = 0; a < STENCIL_NODES; a++) {  /* each pair: its field */
-            int s = st.slot[a];
-            ax += st.S[a] * g->ax[s];
-            ay += st.S[a] * g->ay[s];
-            vx += st.S[a] * g->vx[s];
-            vy += st.S[a] * g->vy[s];
-        }
-        P->vx[p] += dt * ax;
-        P->vy[p] += dt * ay;
-        P->x[p] += dt * vx;
-        P->y[p] += dt * vy;
-        /* record and go on: the loop has no early exit (threads) */
-        if (!isfinite(P->vx[p]) || !isfinite(P->vy[p]))
-            rc = step_fail(sim, p, isfinite(P->vx[p]) ? "velocity y" : "velocity x",
-                           isfinite(P->vx[p]) ? P->vy[p] : P->vx[p]);
-        else if (!(P->x[p] >= g->ox && P->x[p] < xmax))
-            rc = step_fail(sim, p, "position x (left the grid)", P->x[p]);
-        else if (!(P->y[p] >= g->oy && P->y[p] < ymax))
-            rc = step_fail(sim, p, "position y (left the grid)", P->y[p]);
+    double dt = sim->dt, ax = 0, ay = 0, vx = 0, vy = 0;
+    for (int a = 0; a < n; a++) {  /* each pair: its field */
+        int s = st->slot[a];
+        ax += st->S[a] * g->ax[s];
+        ay += st->S[a] * g->ay[s];
+        vx += st->S[a] * g->vx[s];
+        vy += st->S[a] * g->vy[s];
     }
+    P->vx[p] += dt * ax;
+    P->vy[p] += dt * ay;
+    P->x[p] += dt * vx;
+    P->y[p] += dt * vy;
+    /* record and go on: the loop has no early exit (threads) */
+    if (!isfinite(P->vx[p]) || !isfinite(P->vy[p]))
+        return step_fail(sim, p, isfinite(P->vx[p]) ? "velocity y" : "velocity x",
+                         isfinite(P->vx[p]) ? P->vy[p] : P->vx[p]);
+    else if (!(P->x[p] >= g->ox && P->x[p] < xmax))
+        return step_fail(sim, p, "position x (left the grid)", P->x[p]);
+    else if (!(P->y[p] >= g->oy && P->y[p] < ymax))
+        return step_fail(sim, p, "position y (left the grid)", P->y[p]);
+    return 0;
+}
+
+int update_points(Sim *sim)
+{
+    const Grid *g = &sim->grid;
+    double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
+    int rc = 0, np = sim->pts.n;
+    StencilFn wide = sim->scene.run.stencil;
+    if (!wide)                          /* the paper's four nodes */
+        for (int p = 0; p < np; p++) {
+            Stencil st;
+            stencil_linear(sim, p, &st);
+            if (move_point(sim, p, &st, STENCIL_NODES, xmax, ymax))
+                rc = -1;
+        }
+    else                                /* another row of run.shape */
+        for (int p = 0; p < np; p++) {
+            Stencil st;
+            wide(sim, p, &st);
+            if (move_point(sim, p, &st, st.n, xmax, ymax))
+                rc = -1;
+        }
     return rc;
 }
 /// [update_points]

@@ -1,0 +1,82 @@
+/**
+ * @file shapes_check.c
+ * @brief The limits of uGIMP and CPDI in this stage: the MPM step, one
+ *        velocity field per node, and every domain inside the grid (a node
+ *        off the grid would take a share of the point's mass).
+ */
+#include "shapes_check.h"
+
+#include <stdio.h>
+
+#include "cpdi.h"
+#include "gimp.h"
+#include "step.h"
+
+/** The first point whose domain is not inside the grid, or -1; its
+ *  coordinate along the side it crosses in *@p at. */
+static int domain_outside(const Sim *sim, double *at)
+{
+    const Particles *P = &sim->pts;
+    const Grid *g = &sim->grid;
+    double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
+    for (int p = 0; p < P->n; p++) {
+        double l = gimp_half(sim, p), hx = l * g->dx, hy = l * g->dy;
+        if (!(P->x[p] - hx >= g->ox && P->x[p] + hx <= xmax)) {
+            *at = P->x[p];
+            return p;
+        }
+        if (!(P->y[p] - hy >= g->oy && P->y[p] + hy <= ymax)) {
+            *at = P->y[p];
+            return p;
+        }
+    }
+    return -1;
+}
+
+int gimp_domains_inside(Sim *sim, void *state, Seam seam)
+{
+    double at;
+    (void)state;
+    (void)seam;
+    int p = domain_outside(sim, &at);
+    return p < 0 ? 0 : step_fail(sim, p, "GIMP domain (left the grid)", at);
+}
+
+/// [shapes_prepare]
+int shapes_prepare(Sim *sim, void *state, char *err, size_t errlen)
+{
+    const Scene *sc = &sim->scene;
+    const Hooks *h = &sim->hooks;
+    const char *name = sc->run.shape ? sc->run.shape->name : "linear";
+    double at;
+    (void)state;
+    if (sc->run.shape != &shape_gimp && sc->run.shape != &shape_cpdi)
+        return 0;
+    if (sc->run.method->step != sim_step) {
+        snprintf(err, errlen, "%s: run.shape = \"%s\" needs run.method = "
+                 "\"mpm\" (the method \"%s\" has its own shape functions)",
+                 sc->file, name, sc->run.method->name);
+        return -1;
+    }
+    if (h->seam[SEAM_TASK1_FIELDS].n) {
+        snprintf(err, errlen, "%s: run.shape = \"%s\" with cracks or contact "
+                 "between bodies (several velocity fields at a node) is not done "
+                 "yet (chapter 8): use run.shape = \"linear\"", sc->file, name);
+        return -1;
+    }
+    if (sc->run.shape == &shape_cpdi)
+        return cpdi_prepare(sim, err, errlen);
+    int p = domain_outside(sim, &at);
+    if (p >= 0) {
+        snprintf(err, errlen, "%s: run.shape = \"gimp\": point %d (at %g) has "
+                 "its domain outside the grid; add a cell of margin", sc->file,
+                 p, at);
+        return -1;
+    }
+    if (hooks_on_step(&sim->hooks, SEAM_TASK7, gimp_domains_inside, NULL)) {
+        snprintf(err, errlen, "%s: too many step hooks", sc->file);
+        return -1;
+    }
+    return 0;
+}
+/// [shapes_prepare]

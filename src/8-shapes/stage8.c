@@ -1,0 +1,20 @@
+/**
+ * @file stage8.c
+ * @brief Stage 8 adds two rows to the table of shape functions: uGIMP
+ *        (Bardenhagen & Kober 2004) and CPDI (Sadeghirad, Brannon &
+ *        Burghardt 2011).
+ */
+#include "stage8.h"
+
+#include "cpdi.h"
+#include "gimp.h"
+#include "shapes_check.h"
+
+/// [stage8_install]
+void stage8_install(Hooks *h)
+{
+    hooks_add_choice(h, "run.shape", "gimp", &shape_gimp);  /* Bardenhagen 2004 */
+    hooks_add_choice(h, "run.shape", "cpdi", &shape_cpdi);  /* Sadeghirad 2011 */
+    hooks_on_prepare(h, shapes_prepare, NULL);   /* their scenes only */
+}
+/// [stage8_install]

@@ -1,0 +1,49 @@
+/**
+ * @file scene_shapes_refused.c
+ * @brief What stage 8 refuses with run.shape = "gimp" or "cpdi", with exit
+ *        status 1 and a message naming the scene: cracks (keyed velocity
+ *        fields, not done yet) and another run.method; and the stop (exit
+ *        status 3, naming step and point) when a domain leaves the grid:
+ *        the DCB's beam against the grid's left edge (grid.origin moved to
+ *        the beam's end) loses a point's domain in its first step.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "testkit.h"
+
+static char out[16384];
+
+/** mpm on @p args must exit with @p status and @p expect in its message. */
+static void ends(const char *args, int status, const char *expect)
+{
+    int rc = tk_run_mpm(args, out, sizeof out);
+    printf("  %s\n    -> exit %d: %s", args, rc, out);
+    if (rc != status || !strstr(out, expect))
+        fail_msg("expected exit %d and \"%s\"", status, expect);
+}
+
+static void what_the_smooth_shapes_refuse(void **state)
+{
+    (void)state;
+    ends("figures/fig1/dcb_full.cfg -q -o build/test-shapes-refused run.shape=gimp", 1,
+         "figures/fig1/dcb_full.cfg: run.shape = \"gimp\" with cracks or contact");
+    ends("figures/fig1/dcb_full.cfg -q -o build/test-shapes-refused run.shape=cpdi", 1,
+         "run.shape = \"cpdi\" with cracks or contact");
+    ends("tests/1-mpm/scenes/spinning_disk.cfg -q -o build/test-shapes-refused "
+         "run.shape=gimp run.method=xefg run.stress_rate=unrotated", 1,
+         "needs run.method = \"mpm\"");
+    ends("figures/fig1/dcb_half.cfg -q -o build/test-shapes-refused run.shape=gimp "
+         "grid.origin=[0.0,-20.0]", 3,
+         "unstable at step 1 (t = 0.113347 ms): particle 0 GIMP domain (left the grid)");
+    ends("figures/fig1/dcb_half.cfg -q -o build/test-shapes-refused run.shape=cpdi "
+         "grid.origin=[0.0,-20.0]", 3, "particle 0 CPDI domain x (left the grid)");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(what_the_smooth_shapes_refuse),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
