@@ -39,6 +39,8 @@ static void add_point_loads(Sim *sim)
     }
 }
 
+static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what);
+
 /// [extrapolate]
 /** One point's share of Tasks 1 and 3 over the @p n nodes of its stencil:
  *  mass and momentum (eq. 26), or momentum only (eq. 31), and force
@@ -78,20 +80,27 @@ void extrapolate(Sim *sim, unsigned what)
 {
     const Particles *P = &sim->pts;
     Grid *g = &sim->grid;
-    StencilFn wide = sim->scene.run.stencil;
-    if (!wide)                          /* the paper's four nodes */
-        for (int p = 0; p < P->n; p++) {
+    if (sim->scene.run.stencil)         /* another row of run.shape */
+        extrapolate_wide(sim, sim->scene.run.stencil, what);
+    else
+        for (int p = 0; p < P->n; p++) {  /* the paper's four nodes */
             Stencil st;
             stencil_linear(sim, p, &st);
             scatter_point(P, g, p, &st, STENCIL_NODES, what);
-        }
-    else                                /* another row of run.shape */
-        for (int p = 0; p < P->n; p++) {
-            Stencil st;
-            wide(sim, p, &st);
-            scatter_point(P, g, p, &st, st.n, what);
         }
     if (what & EXTRAP_FORCE)
         add_point_loads(sim);
 }
 /// [extrapolate]
+
+/** The scatters through a stencil of run.shape's table (chapter 8). */
+static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what)
+{
+    const Particles *P = &sim->pts;
+    Grid *g = &sim->grid;
+    for (int p = 0; p < P->n; p++) {
+        Stencil st;
+        wide(sim, p, &st);
+        scatter_point(P, g, p, &st, st.n, what);
+    }
+}

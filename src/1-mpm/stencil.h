@@ -45,6 +45,8 @@ static inline void stencil_linear(const Sim *sim, int p, Stencil *st)
     }
 }
 
+/// [stencil]
+
 /** @brief The stencil of point @p p: run.shape's (linear unless the scene
  *         chose another row). @return the nodes in use, Stencil::n */
 static inline int stencil_of_point(const Sim *sim, int p, Stencil *st)
@@ -56,7 +58,6 @@ static inline int stencil_of_point(const Sim *sim, int p, Stencil *st)
     stencil_linear(sim, p, st);
     return st->n = STENCIL_NODES;
 }
-/// [stencil]
 
 /** @brief The stencil of a position: nodes and shape functions; every
  *         pair in field 0 (crack points, output). */

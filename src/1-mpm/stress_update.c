@@ -66,6 +66,8 @@ static void rotate_with_spin(Sim *sim, double dt_star)
 }
 /// [rotate_with_spin]
 
+static int update_stress_wide(Sim *sim, StencilFn wide, double dt_star);
+
 /// [update_stress]
 /** Point @p p's strain increment from the nodal velocities over the @p n
  *  nodes of its stencil (eq. 34-35) and its material's stress update
@@ -102,24 +104,31 @@ static inline int strain_point(Sim *sim, int p, const Stencil *st, int n,
 
 int update_stress(Sim *sim, double dt_star)
 {
-    StencilFn wide = sim->scene.run.stencil;
     int rc = 0;
     if (sim->scene.run.objective)
         rotate_with_spin(sim, dt_star);
-    if (!wide)                          /* the paper's four nodes */
-        for (int p = 0; p < sim->pts.n; p++) {
-            Stencil st;
-            stencil_linear(sim, p, &st);
-            if (strain_point(sim, p, &st, STENCIL_NODES, dt_star))
-                rc = -1;
-        }
-    else                                /* another row of run.shape */
-        for (int p = 0; p < sim->pts.n; p++) {
-            Stencil st;
-            wide(sim, p, &st);
-            if (strain_point(sim, p, &st, st.n, dt_star))
-                rc = -1;
-        }
+    if (sim->scene.run.stencil)         /* another row of run.shape */
+        return update_stress_wide(sim, sim->scene.run.stencil, dt_star);
+    for (int p = 0; p < sim->pts.n; p++) {  /* the paper's four nodes */
+        Stencil st;
+        stencil_linear(sim, p, &st);
+        if (strain_point(sim, p, &st, STENCIL_NODES, dt_star))
+            rc = -1;
+    }
     return rc;
 }
 /// [update_stress]
+
+/** The strain and stress through a stencil of run.shape's table
+ *  (chapter 8). */
+static int update_stress_wide(Sim *sim, StencilFn wide, double dt_star)
+{
+    int rc = 0;
+    for (int p = 0; p < sim->pts.n; p++) {
+        Stencil st;
+        wide(sim, p, &st);
+        if (strain_point(sim, p, &st, st.n, dt_star))
+            rc = -1;
+    }
+    return rc;
+}

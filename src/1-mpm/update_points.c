@@ -6,6 +6,8 @@
 
 #include "step.h"
 
+static int update_points_wide(Sim *sim, StencilFn wide);
+
 /// [update_points]
 /** Task 5 for point @p p over the @p n nodes of its stencil (eq. 30):
  *  0, or -1 with the instability recorded. */
@@ -42,21 +44,29 @@ int update_points(Sim *sim)
     const Grid *g = &sim->grid;
     double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
     int rc = 0, np = sim->pts.n;
-    StencilFn wide = sim->scene.run.stencil;
-    if (!wide)                          /* the paper's four nodes */
-        for (int p = 0; p < np; p++) {
-            Stencil st;
-            stencil_linear(sim, p, &st);
-            if (move_point(sim, p, &st, STENCIL_NODES, xmax, ymax))
-                rc = -1;
-        }
-    else                                /* another row of run.shape */
-        for (int p = 0; p < np; p++) {
-            Stencil st;
-            wide(sim, p, &st);
-            if (move_point(sim, p, &st, st.n, xmax, ymax))
-                rc = -1;
-        }
+    if (sim->scene.run.stencil)         /* another row of run.shape */
+        return update_points_wide(sim, sim->scene.run.stencil);
+    for (int p = 0; p < np; p++) {      /* the paper's four nodes */
+        Stencil st;
+        stencil_linear(sim, p, &st);
+        if (move_point(sim, p, &st, STENCIL_NODES, xmax, ymax))
+            rc = -1;
+    }
     return rc;
 }
 /// [update_points]
+
+/** Task 5 through a stencil of run.shape's table (chapter 8). */
+static int update_points_wide(Sim *sim, StencilFn wide)
+{
+    const Grid *g = &sim->grid;
+    double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
+    int rc = 0, np = sim->pts.n;
+    for (int p = 0; p < np; p++) {
+        Stencil st;
+        wide(sim, p, &st);
+        if (move_point(sim, p, &st, st.n, xmax, ymax))
+            rc = -1;
+    }
+    return rc;
+}
