@@ -7,7 +7,9 @@
 int step_fail(Sim *sim, int p, const char *quantity, double value)
 {
     Failure *f = &sim->fail;
-    /* the lowest point of the step, so that a loop may run in any order */
+    /* the lowest point of the step, so that a loop may run in any order,
+       on any number of threads (one at a time in here) */
+#pragma omp critical(step_fail)
     if (!f->quantity || (f->step == sim->step && p < f->particle)) {
         f->step = sim->step;
         f->time = sim->t;

@@ -109,6 +109,8 @@ int update_stress(Sim *sim, double dt_star)
         rotate_with_spin(sim, dt_star);
     if (sim->scene.run.stencil)         /* another row of run.shape */
         return update_stress_wide(sim, sim->scene.run.stencil, dt_star);
+    /* a point writes only its own arrays: any number of threads */
+#pragma omp parallel for num_threads(sim->threads) reduction(min : rc)
     for (int p = 0; p < sim->pts.n; p++) {  /* the paper's four nodes */
         Stencil st;
         stencil_linear(sim, p, &st);

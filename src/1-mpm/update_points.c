@@ -46,6 +46,8 @@ int update_points(Sim *sim)
     int rc = 0, np = sim->pts.n;
     if (sim->scene.run.stencil)         /* another row of run.shape */
         return update_points_wide(sim, sim->scene.run.stencil);
+    /* a point writes only its own arrays: any number of threads */
+#pragma omp parallel for num_threads(sim->threads) reduction(min : rc)
     for (int p = 0; p < np; p++) {      /* the paper's four nodes */
         Stencil st;
         stencil_linear(sim, p, &st);
