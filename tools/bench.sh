@@ -157,6 +157,29 @@ for fmt in ascii binary; do
 done
 
 echo
+# threads: the time loop of 200 steps of the 200k disks on 1 and on every
+# core (nproc), the best of REPEAT runs each (so far only the point and
+# stress updates run on threads: chapter 1's appendix)
+cores=$(nproc 2>/dev/null || echo 1)
+printf 'threads, 200 steps of the 200k disks (musl):\n'
+declare -A TLOOP
+for th in 1 "$cores"; do
+    best=""
+    for ((r = 0; r < REPEAT; r++)); do
+        $PIN $MPM tools/bench/disks_200k.cfg -q -o "$WORK/thr" run.update=musl \
+            run.time="$time200" run.threads="$th" >"$WORK/out" 2>"$WORK/err" || break
+        t=$(sed -nE 's/.*steps in ([0-9.]+) s.*/\1/p' "$WORK/out")
+        best=$(awk -v t="$t" -v m="$best" 'BEGIN { print (m == "" || t < m) ? t : m }')
+    done
+    TLOOP[$th]=$best
+    printf '  %2s thread(s): time loop %s s\n' "$th" "${best:-failed}"
+done
+if [ -n "${TLOOP[1]:-}" ] && [ -n "${TLOOP[$cores]:-}" ]; then
+    awk -v a="${TLOOP[1]}" -v b="${TLOOP[$cores]}" -v n="$cores" \
+        'BEGIN { printf "  speed-up on %d threads: %.2f\n", n, a / b }'
+fi
+
+echo
 r=${RATE[200k.musl]:-}
 printf 'goal: >= %g particle-steps/s on one thread at 200k points; <= %d bytes/point\n' \
     "$GOAL_RATE" "$GOAL_BYTES"
