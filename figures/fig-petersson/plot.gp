@@ -9,9 +9,9 @@ set title "Petersson's notched beam (span 2000, D = 200, b = 50, a0 = 100 mm):\n
 set xlabel "mid-span deflection (mm)"
 set ylabel "load P (N)"
 set xrange [0:1.6]
-set yrange [0:1000]
+set yrange [0:1100]
 set grid
-set key top right
+set key at graph 0.98, graph 0.98 right
 $ref << EOD
 0.365 774
 0.607 598
@@ -20,4 +20,4 @@ plot d1 using 1:2 with lines lw 1.5 lc "orange" title "exponential, h = 20 mm", 
      d2 using 1:2 with lines lw 1.5 lc "forest-green" title "exponential, h = 13.3 mm", \
      d3 using 1:2 with lines lw 2 lc "blue" title "exponential, h = 10 mm", \
      dl using 1:2 with lines lw 1 dt 2 lc "gray40" title "linear softening, h = 20 mm", \
-     $ref using 1:2:($2 * 0.1) with yerrorbars pt 7 ps 1.6 lc "red" title "Petersson (1981), as ssnp166a: 774 N at 0.365, 598 N at 0.607 mm (+-10 %)"
+     $ref using 1:2:($2 * 0.1) with yerrorbars pt 7 ps 1.6 lc "red" title "Petersson (1981) as ssnp166a checks it, +-10 %"
