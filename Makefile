@@ -215,7 +215,7 @@ check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) bui
 # the chapters show these figures (about thirty-two minutes to draw) and
 # include the tables their scripts write (build/figures/*.txt, on doxygen's
 # EXAMPLE_PATH: a missing one is a warning, so an error)
-DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-slide,$(notdir $(wildcard figures/fig*)))
+DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-petersson fig-slide,$(notdir $(wildcard figures/fig*)))
 # MathJax is copied into the book (not linked), so that it can be moved or
 # served as it is; its sources (unpacked), tests and combined configurations
 # are left out
@@ -284,6 +284,9 @@ FIG_OUT_fig-xefg-dcb := fig-xefg-dcb.png fig-xefg-dcb.txt
 FIG_RUN_fig-xefg-dcb := build/stage6/mpm build/stage6/libmpm.a build/stage6/tests/support/q4.o
 FIG_USES_fig-xefg-dcb := figures/fig1/dcb_full.cfg tests/support/q4.h \
     $(addprefix figures/fig-tradeoff/,dcb_opening.c dcb_opening.sh dcb_scene.sh)
+FIG_OUT_fig-petersson := fig-petersson.png fig-petersson.txt
+FIG_RUN_fig-petersson := build/stage6/mpm
+FIG_USES_fig-petersson := tests/6-xefg/scenes/petersson.cfg
 
 FIGURES := $(notdir $(wildcard figures/fig*))
 define FIGURE_RULES

@@ -19,6 +19,9 @@
 typedef struct CohesiveSettings {
     int on;           /**< the crack has one */
     CohesiveLaw law;  /**< its law (K = 0 until the default is set) */
+    int notch;        /**< its first segments, as given, traction-free: a
+                           notch with a cohesive ligament grown from its tip
+                           (key notch_segments, default 0) */
     int line;         /**< line of the group, for messages */
 } CohesiveSettings;
 

@@ -193,12 +193,13 @@ int cohesive_segment_points(Cohesive *c, const Xefg *x, const Sim *sim,
 
 /** The points of crack @p k: each part of a segment inside a body cut in
  *  pieces no longer than @p h, each piece with the Gauss rule of @p n
- *  points. */
+ *  points; none on its first notch_segments segments (a traction-free
+ *  notch, the Petersson beam of chapter 6b). */
 static int crack_points(Cohesive *c, const Xefg *x, const Sim *sim,
                         const CellList *cl, int k, double h, ShapeRows *R,
                         int *cap, char *err, size_t errlen)
 {
-    for (int g = 0; g + 1 < x->crack[k].n; g++)
+    for (int g = c->set[k].notch; g + 1 < x->crack[k].n; g++)
         if (cohesive_segment_points(c, x, sim, cl, k, g, h, R, cap, err, errlen))
             return -1;
     return 0;

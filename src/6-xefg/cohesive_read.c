@@ -12,7 +12,7 @@
 #include "scene_read.h"
 
 const char *const cohesive_keys[] = {"law", "f_t", "G_f", "penalty", "shear",
-                                     NULL};
+                                     "notch_segments", NULL};
 
 static void cohesive_release(void *state)
 {
@@ -67,14 +67,22 @@ int cohesive_read(Sim *sim, const config_setting_t *s, int index,
     CohesiveSettings *set = &c->set[index];
     CohesiveLaw *L = &set->law;
     const char *law = "linear";
-    *set = (CohesiveSettings){1, {COHESIVE_LINEAR, 0, 0, 0, 0},
+    double notch = 0.0;
+    *set = (CohesiveSettings){1, {COHESIVE_LINEAR, 0, 0, 0, 0}, 0,
                               (int)config_setting_source_line(s)};
     if (scene_string(r, s, "law", 0, &law) < 0 ||
         scene_number(r, s, "f_t", 1, 0.0, &L->f_t) < 0 ||
         scene_number(r, s, "G_f", 1, 0.0, &L->G_f) < 0 ||
         scene_number(r, s, "penalty", 0, 0.0, &L->K) < 0 ||
-        scene_number(r, s, "shear", 0, 0.0, &L->beta) < 0)
+        scene_number(r, s, "shear", 0, 0.0, &L->beta) < 0 ||
+        scene_number(r, s, "notch_segments", 0, 0.0, &notch) < 0)
         return -1;
+    if (!(notch >= 0.0 && notch <= 1e6 && notch == floor(notch)))
+        return scene_error(r, at(s, "notch_segments"), "notch_segments",
+                           "%g: the number of the crack's first segments "
+                           "left traction-free (a notch) must be a whole "
+                           "number >= 0", notch);
+    set->notch = (int)notch;
     if (strcmp(law, "linear") == 0)
         L->kind = COHESIVE_LINEAR;
     else if (strcmp(law, "exponential") == 0)
