@@ -210,7 +210,8 @@ check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) bui
              $(REPLAY) $(EXERCISE_BINS)
 
 # ---- book, figures, bench ----------------------------------------------------
-# the chapters show these figures (about thirty-two minutes to draw) and
+# the chapters show these figures (about thirty-two minutes to draw, and
+# fig-growth's four to eight more on a shared two-core machine) and
 # include the tables their scripts write (build/figures/*.txt, on doxygen's
 # EXAMPLE_PATH: a missing one is a warning, so an error)
 DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-slide fig-growth,$(notdir $(wildcard figures/fig*)))
