@@ -244,51 +244,65 @@ done
 {
     echo "CRAMP and XEFG on growing cracks (make fig-growth, $MPM)."
     echo
-    echo "DCB: tests/7-fracture/scenes/dcb_growth.cfg (100 x 36 mm, a0 = 50 mm, E = 0.1 MPa,"
-    echo "nu = 0.33, plane stress), its end opened to Delta(t), 600 ms; CRAMP: J growth,"
-    echo "G_c = 5e-5 N/mm, segments of half a cell, cells 100/N x h, 2 x 2 points;"
-    echo "XEFG: cohesive growth, linear law, G_f = 5e-5 N/mm, f_t = $XEFG_FT MPa"
-    echo "(E G_f / f_t^2 = $(awk -v f="$XEFG_FT" 'BEGIN { printf "%.3g", 0.1 * 5e-5 / (f * f) }') mm; arm 18 mm), segments of h, nodes h apart."
-    echo "FEA: Q4, 0.5 x 0.25 mm, G(a) = G_c at Delta = C sqrt(2 B G_c / C'), the end"
-    echo "at x = 0 (CRAMP) or h/2 (XEFG).  Delta at which the crack of length a grows:"
-    echo "the events' openings against the length before the event, interpolated."
+    echo "DCB: tests/7-fracture/scenes/dcb_growth.cfg (100 x 36 mm, a0 = 50 mm,"
+    echo "E = 0.1 MPa, nu = 0.33, plane stress), its end opened to Delta(t), 600 ms."
+    echo "CRAMP: J growth, G_c = 5e-5 N/mm, segments of half a cell, cells 100/N x h,"
+    echo "2 x 2 points.  XEFG: cohesive growth, linear law, G_f = 5e-5 N/mm,"
+    echo "f_t = $XEFG_FT MPa (E G_f / f_t^2 = $(awk -v f="$XEFG_FT" 'BEGIN { printf "%.3g", 0.1 * 5e-5 / (f * f) }') mm; arm 18 mm), segments of h, nodes h"
+    echo "apart.  FEA: Q4, 0.5 x 0.25 mm, G(a) = G_c at Delta = C sqrt(2 B G_c / C'),"
+    echo "the end at x = 0 (CRAMP) or h/2 (XEFG).  Delta at which the crack of length a"
+    echo "grows: the events' openings against the length before the event, interpolated."
     echo
-    printf '%-5s %4s %6s %6s %8s %6s %7s %8s' method h points steps "loop s" events "a end" "max|y|"
-    for A in 50 $AS; do printf ' %16s' "a=$A: Delta err"; done
-    printf ' %7s\n' "RMS %"
-    printf '%-5s %4s %6s %6s %8s %6s %7s %8s' FEA - - - - - - -
-    for A in 50 $AS; do printf ' %16s' "$(awk -v A="$A" '$1 == A { printf "%.4f", $4 }' "$RUNS/fea_0.txt")"; done
-    printf '\n'
+    printf '%-5s %4s %6s %6s %8s %6s %7s %8s %7s\n' method h points steps "loop s" events "a end" "max|y|" "RMS %"
     tail -n +2 "$dcb" | while IFS=, read -r m h pts st lp ev a dev rms mx nr init ifea ierr; do
         printf '%-5s %4s %6s %6s %8.2f %6s %7.2f %8s' "$m" "$h" "$pts" "$st" "$lp" "$ev" "$a" "$dev"
-        if [ "$init" = - ]; then printf ' %16s' "no event"
-        else printf ' %16s' "$(awk -v v="$init" -v e="$ierr" 'BEGIN { printf "%.4f %+6.2f%%", v, 100 * e }')"; fi
-        while read -r A v f e; do
-            if [ "$v" = - ]; then printf ' %16s' "not reached"
-            else printf ' %16s' "$(awk -v v="$v" -v e="$e" 'BEGIN { printf "%.4f %+6.2f%%", v, 100 * e }')"; fi
-        done <"$RUNS/error_dcb-$m-$h.txt"
         if [ "$rms" = - ]; then printf ' %7s' -; else awk -v r="$rms" 'BEGIN { printf " %7.2f", 100 * r }'; fi
-        awk -v d="$dev" -v h="$h" 'BEGIN { if (d > h) printf "  path off the line"; printf "\n" }'
+        awk -v d="$dev" -v h="$h" 'BEGIN { if (d > h) printf "  path off"; printf "\n" }'
     done
-    echo "(a=50: the first event, the FEA's at a0; XEFG's errors are against the FEA with"
-    echo "its end at h/2 (the table $RUNS/fea_H/2.txt, its fourth column);"
-    echo "max|y|: the grown path's largest distance from the crack line, mm; \"path off"
-    echo "the line\": more than h, so the straight crack's FEA does not apply to the row)"
     echo
-    echo "Kalthoff-Winkler, the upper half, 90 us: CRAMP tests/7-fracture/scenes/kalthoff_half.cfg"
-    echo "(G_c = 22.1 N/mm, cells of 1 mm, 2 x 2 points); XEFG figures/fig-growth/kalthoff_xefg.cfg"
-    echo "(linear law, G_f = 22.1 N/mm, f_t as listed, nodes 1 mm apart).  Kink: the first new"
-    echo "segment's angle to the notch, from the first snapshot that holds it (experiment: about 70)."
+    echo "The opening Delta (mm) at which the crack of length a grows: the FEA's (the end"
+    echo "at x = 0), and each run's error against its FEA (%; a = 50: the first event):"
     echo
-    printf '%-5s %6s %6s %8s %6s %10s %9s  %s\n' method "f_t" steps "loop s" events "first, us" "kink deg" "tip at the end (mm)"
+    printf '%-5s %4s' "" a
+    for A in 50 $AS; do printf ' %9s' "$A mm"; done
+    printf '\n%-5s %4s' FEA -
+    for A in 50 $AS; do printf ' %9s' "$(awk -v A="$A" '$1 == A { printf "%.4f", $4 }' "$RUNS/fea_0.txt")"; done
+    printf '\n'
+    tail -n +2 "$dcb" | while IFS=, read -r m h pts st lp ev a dev rms mx nr init ifea ierr; do
+        printf '%-5s %4s' "$m" "$h"
+        if [ "$init" = - ]; then printf ' %9s' "no event"
+        else awk -v e="$ierr" 'BEGIN { printf " %+8.2f%%", 100 * e }'; fi
+        while read -r A v f e; do
+            if [ "$v" = - ]; then printf ' %9s' "-"
+            else awk -v e="$e" 'BEGIN { printf " %+8.2f%%", 100 * e }'; fi
+        done <"$RUNS/error_dcb-$m-$h.txt"
+        printf '\n'
+    done
+    echo "(XEFG's FEA has its end at h/2: $RUNS/fea_H/2.txt, fourth column;"
+    echo "max|y|: the grown path's largest distance from the crack line, mm; \"path"
+    echo "off\": more than h, so the straight crack's FEA does not apply to the row;"
+    echo "RMS over a = $AS; -: not reached)"
+    echo
+    echo "Kalthoff-Winkler, the upper half, 90 us: CRAMP tests/7-fracture/scenes/"
+    echo "kalthoff_half.cfg (G_c = 22.1 N/mm, cells of 1 mm, 2 x 2 points); XEFG"
+    echo "figures/fig-growth/kalthoff_xefg.cfg (linear law, G_f = 22.1 N/mm, f_t as"
+    echo "listed, nodes 1 mm apart).  Kink: the first new segment's angle to the notch,"
+    echo "from the first snapshot that holds it (the experiment: about 70 degrees)."
+    echo
+    printf '%-5s %5s %5s %7s %6s %9s %5s  %s\n' method "f_t" steps "loop s" events "first us" kink "tip at the end (mm)"
     tail -n +2 "$kw" | while IFS=, read -r r m ft st lp ev tf k xt yt p note; do
-        printf '%-5s %6s %6s %8.2f %6s %10s %9s  (%.2f, %.2f)%s\n' "$m" "$ft" "$st" "$lp" "$ev" "$tf" "$k" "$xt" "$yt" "${note:+  $note}"
+        printf '%-5s %5s %5s %7.2f %6s %9s %5s  (%.2f, %.2f)%s\n' "$m" "$ft" "$st" "$lp" "$ev" "$tf" "$k" "$xt" "$yt" "${note:+  $note}"
     done
     [ ${#errs[@]} -gt 0 ] && { echo; printf '%s\n' "${errs[@]}"; }
     echo
-    echo "CPU: $(fig_cpu); $JOBS runs at a time (loop s: each run's own time loop)."
+    echo "CPU: $(fig_cpu); $JOBS runs at a time"
+    echo "(loop s: each run's own time loop)."
     echo "load average before the runs: $load0; after: $(fig_load)"
-    echo "the figure's runs took $(fig_since "$t_start") s in all"
+    if [ "${REUSE:-0}" = 1 ]; then
+        echo "(REUSE=1: runs kept from an earlier make; this one took $(fig_since "$t_start") s)"
+    else
+        echo "the figure's runs took $(fig_since "$t_start") s in all"
+    fi
 } >"$txt"
 cat "$txt"
 [ "${PLOT:-1}" = 0 ] && exit 0
