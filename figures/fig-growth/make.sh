@@ -25,9 +25,9 @@
 #
 # XEFG's DCB crack turns: Rankine's rule grows it normal to sigma_1, and
 # the DCB's positive T-stress puts sigma_1 along the crack (chapter 7b,
-# "CRAMP and XEFG, growing").  5.7 minutes of CPU time, 4.7 minutes on
-# a shared two-core machine (6.3 when busier; the table prints the load
-# averages and the time); the longest run, XEFG's plate with f_t = 1000
+# "CRAMP and XEFG, growing").  5.4 to 5.7 minutes of CPU time, 4.5 to
+# 4.7 minutes on a shared two-core machine (6.3 when busier; the table
+# prints the load averages and the time); the longest run, XEFG's plate with f_t = 1000
 # MPa (86 events), takes most of it, and starts first.
 #
 # What makes the DCB comparison fair: the same beam, material, loading
