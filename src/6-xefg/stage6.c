@@ -162,9 +162,9 @@ static int xefg_checkpoint(Sim *sim, void *state, FILE *f, int save)
     return 0;
 }
 
-/** A cohesive crack, or one that grows, under another method: refused at
- *  its first `cohesive` or `growth` group (CRAMP's cracks are
- *  traction-free or in contact, and stay as they are). */
+/** A cohesive crack under another method: refused at its first `cohesive`
+ *  group, which holds its growth too (CRAMP's cracks are traction-free or
+ *  in contact; stage 7 grows them by J). */
 static int cohesive_refused(const Sim *sim, char *err, size_t errlen)
 {
     const Cohesive *c = cohesive_of(sim);
@@ -177,19 +177,6 @@ static int cohesive_refused(const Sim *sim, char *err, size_t errlen)
                  "to run, or remove the cohesive group of crack %d",
                  scene_lines_at(sim->scene.lines, sim->scene.file,
                                 c->set[k].line, at, SCENE_AT_LEN),
-                 sim->scene.run.method->name, k);
-        return -1;
-    }
-    const Growth *g = growth_of(sim);
-    for (int k = 0; g && k < g->ncrack; k++) {
-        if (!g->set[k].on)
-            continue;
-        char at[SCENE_AT_LEN];
-        snprintf(err, errlen, "%s: growth: cracks grow in the XEFG method "
-                 "only, but run.method is \"%s\": add method = \"xefg\" to "
-                 "run, or remove the growth group of crack %d",
-                 scene_lines_at(sim->scene.lines, sim->scene.file,
-                                g->set[k].line, at, SCENE_AT_LEN),
                  sim->scene.run.method->name, k);
         return -1;
     }

@@ -24,24 +24,6 @@
 #define DIR_B "build/test-vtu-binary/binary"
 #define DIR_A "build/test-vtu-binary/ascii"
 
-/** A whole file in memory (NUL added). */
-static char *slurp(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    assert_non_null(f);
-    assert_int_equal(fseek(f, 0, SEEK_END), 0);
-    long n = ftell(f);
-    assert_true(n > 0);
-    rewind(f);
-    char *b = malloc((size_t)n + 1);
-    assert_non_null(b);
-    assert_int_equal(fread(b, 1, (size_t)n, f), (size_t)n);
-    b[n] = '\0';
-    fclose(f);
-    *len = (size_t)n;
-    return b;
-}
-
 /** The appended block of the DataArray named @p name ("" for the Points'
  *  unnamed array): its bytes and their count, checked against @p want. */
 static const unsigned char *block(const char *file, size_t len, const char *name,
@@ -102,7 +84,7 @@ static void points_and_grid_to_the_last_bit(void **state)
     const Particles *P = &sb->pts;
     int n = P->n;
     size_t len;
-    char *f = slurp(DIR_B "/particles_00000.vtu", &len);
+    char *f = tk_slurp(DIR_B "/particles_00000.vtu", &len);
     char want[64];
     snprintf(want, sizeof want, "NumberOfPoints=\"%d\" NumberOfCells=\"%d\"", n, n);
     assert_non_null(strstr(f, want));
@@ -130,16 +112,16 @@ static void points_and_grid_to_the_last_bit(void **state)
     assert_true(len > strlen(end));
     assert_memory_equal(f + len - strlen(end), end, strlen(end));
     size_t lenf;
-    char *g = slurp(DIR_B "/particles_final.vtu", &lenf);
+    char *g = tk_slurp(DIR_B "/particles_final.vtu", &lenf);
     assert_int_equal(lenf, len);
     assert_memory_equal(f, g, len);                    /* same time, same state */
     free(g);
     free(f);
 
     /* the grid: the text file's 17 digits, read back, against the bits */
-    char *csv = slurp(DIR_A "/grid_00000.csv", &len);
+    char *csv = tk_slurp(DIR_A "/grid_00000.csv", &len);
     size_t lg;
-    char *gv = slurp(DIR_B "/grid_00000.vtu", &lg);
+    char *gv = tk_slurp(DIR_B "/grid_00000.vtu", &lg);
     int rows = 0;
     double x[4096], y[4096], m[4096], sxx[4096];
     char *line = strtok(csv, "\n");
