@@ -16,6 +16,7 @@
 struct Sim;
 struct Stencil;
 struct ShapeFunctions;
+struct Transfer;
 
 /** Kind of region a body fills. */
 typedef enum { SHAPE_RECTANGLE, SHAPE_DISK, SHAPE_POLYGON } ShapeKind;
@@ -142,6 +143,9 @@ typedef struct RunSettings {
     /** The stencil function of run.shape, NULL for the paper's bilinear
      *  functions (computed inline by stencil_of_point()). */
     void (*stencil)(const struct Sim *sim, int p, struct Stencil *st);
+    /** The transfer of run.transfer (chapter 8), NULL for the paper's
+     *  (eq. 26 and 30); it runs through RunSettings::stencil. */
+    const struct Transfer *transfer;
 } RunSettings;
 
 /** @brief The fraction of run.gravity acting at time @p t: t / ramp during

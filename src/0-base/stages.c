@@ -89,6 +89,7 @@ void mpm_install_stages(Hooks *h)
 #else
     hooks_add_refusal(h, "run.shape", "gimp", "stage 8 (GIMP and CPDI shape functions)");
     hooks_add_refusal(h, "run.shape", "cpdi", "stage 8 (GIMP and CPDI shape functions)");
+    hooks_add_refusal(h, "run.transfer", NULL, "stage 8 (the APIC transfer)");
 #endif
     hooks_begin_stage(h, 99);    /* a test's plug-in comes after every stage */
 }

@@ -9,6 +9,7 @@
  * the same per-point functions.
  */
 #include "step.h"
+#include "transfer.h"
 
 void load_point_force(const Load *L, double t, double *fx, double *fy)
 {
@@ -98,9 +99,12 @@ static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what)
 {
     const Particles *P = &sim->pts;
     Grid *g = &sim->grid;
+    const Transfer *tr = sim->scene.run.transfer;
     for (int p = 0; p < P->n; p++) {
         Stencil st;
         wide(sim, p, &st);
         scatter_point(P, g, p, &st, st.n, what);
+        if (tr && (what & (EXTRAP_MASS | EXTRAP_MOMENTUM)))
+            tr->scatter(sim, p, &st, g);    /* run.transfer (chapter 8) */
     }
 }

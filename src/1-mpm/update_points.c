@@ -5,6 +5,7 @@
 #include <math.h>
 
 #include "step.h"
+#include "transfer.h"
 
 static int update_points_wide(Sim *sim, StencilFn wide);
 
@@ -64,11 +65,14 @@ static int update_points_wide(Sim *sim, StencilFn wide)
     const Grid *g = &sim->grid;
     double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
     int rc = 0, np = sim->pts.n;
+    const Transfer *tr = sim->scene.run.transfer;
     for (int p = 0; p < np; p++) {
         Stencil st;
         wide(sim, p, &st);
         if (move_point(sim, p, &st, st.n, xmax, ymax))
             rc = -1;
+        else if (tr)
+            tr->gather(sim, p, &st);        /* run.transfer (chapter 8) */
     }
     return rc;
 }

@@ -2,10 +2,12 @@
  * @file stage8.c
  * @brief Stage 8 adds two rows to the table of shape functions: uGIMP
  *        (Bardenhagen & Kober 2004) and CPDI (Sadeghirad, Brannon &
- *        Burghardt 2011).
+ *        Burghardt 2011); and the affine transfer APIC (Jiang et al. 2015),
+ *        run.transfer.
  */
 #include "stage8.h"
 
+#include "apic.h"
 #include "cpdi.h"
 #include "gimp.h"
 #include "shapes_check.h"
@@ -16,5 +18,6 @@ void stage8_install(Hooks *h)
     hooks_add_choice(h, "run.shape", "gimp", &shape_gimp);  /* Bardenhagen 2004 */
     hooks_add_choice(h, "run.shape", "cpdi", &shape_cpdi);  /* Sadeghirad 2011 */
     hooks_on_prepare(h, shapes_prepare, NULL);   /* their scenes only */
+    apic_install(h);                             /* run.transfer, Jiang 2015 */
 }
 /// [stage8_install]

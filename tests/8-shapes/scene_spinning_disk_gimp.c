@@ -17,9 +17,11 @@
  * added after that run and does no better (median 11.49, largest 43.0).
  * The median point, inside the disk, is as noisy with all three, so this
  * noise is not chiefly the gradient's jump at cell edges; it falls with
- * finer cells and more points per cell, not with a smaller time step
- * (chapter 8), and its source is not established here.
- * MPM_GIMP_ISSUE_TARGET=1 asserts the target for both (it fails).
+ * finer cells and more points per cell, not with a smaller time step.
+ * Its source is the transfer (chapter 8, test_apic.c): a node's velocity
+ * is the mass average of its points' velocities, w x (their mass centre)
+ * in a spin, not w x x_i. The APIC transfer meets the target
+ * (scene_spinning_disk_apic.c); this test keeps the paper's transfer.
  *
  * What the test asserts by default, bounds set after that first run from
  * its numbers (so they record, they do not predict):
@@ -125,7 +127,7 @@ static int usl_completes(const char *shape, const char *cells, const char *size,
 static void gimp_and_cell_crossing_noise(void **state)
 {
     (void)state;
-    const char *h = getenv("MPM_SPIN_CELLS"), *t = getenv("MPM_GIMP_ISSUE_TARGET");
+    const char *h = getenv("MPM_SPIN_CELLS");
     int fine = h && strcmp(h, "0.5") == 0;
     const char *cells = fine ? "grid.cells=[64, 64]" : "grid.cells=[32, 32]";
     const char *size = fine ? "grid.cell_size=[0.5, 0.5]" : "grid.cell_size=[1.0, 1.0]";
@@ -146,12 +148,6 @@ static void gimp_and_cell_crossing_noise(void **state)
     assert_false(lin_usl);
     assert_true(gu.vm_max <= 0.2 * lin.vm_max);
     assert_close(ru.lz, 1.0, 0.05);
-    if (t && strcmp(t, "1") == 0) {          /* issue 30's target: not met */
-        assert_true(gimp.vm_max <= 0.1 * lin.vm_max);
-        assert_close(rg.ke, 1.0, 0.005);
-        assert_true(cpdi.vm_max <= 0.1 * lin.vm_max);
-        assert_close(rc.ke, 1.0, 0.005);
-    }
 }
 
 int main(void)
