@@ -6,6 +6,7 @@
  *        status 3, naming step and point) when a domain leaves the grid:
  *        the DCB's beam against the grid's left edge (grid.origin moved to
  *        the beam's end) loses a point's domain in its first step.
+ *        run.transfer = "apic" is refused with cracks and with XEFG alike.
  */
 #include <stdio.h>
 #include <string.h>
@@ -33,6 +34,11 @@ static void what_the_smooth_shapes_refuse(void **state)
     ends("tests/1-mpm/scenes/spinning_disk.cfg -q -o build/test-shapes-refused "
          "run.shape=gimp run.method=xefg run.stress_rate=unrotated", 1,
          "needs run.method = \"mpm\"");
+    ends("figures/fig1/dcb_full.cfg -q -o build/test-shapes-refused run.transfer=apic",
+         1, "figures/fig1/dcb_full.cfg: run.transfer = \"apic\" with cracks or contact");
+    ends("tests/1-mpm/scenes/spinning_disk.cfg -q -o build/test-shapes-refused "
+         "run.transfer=apic run.method=xefg run.stress_rate=unrotated", 1,
+         "run.transfer = \"apic\" needs run.method = \"mpm\"");
     ends("figures/fig1/dcb_half.cfg -q -o build/test-shapes-refused run.shape=gimp "
          "grid.origin=[0.0,-20.0]", 3,
          "unstable at step 1 (t = 0.113347 ms): particle 0 GIMP domain (left the grid)");

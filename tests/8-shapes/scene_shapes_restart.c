@@ -3,7 +3,8 @@
  * @brief A run with uGIMP or CPDI stopped and restarted gives the same
  *        bytes as one run through: CPDI's deformation gradients travel in
  *        the checkpoint (without them a restarted CPDI run starts its
- *        domains square again and its points differ).
+ *        domains square again and its points differ), and so do APIC's
+ *        affine parts B_p (run.transfer = "apic").
  *
  * The spinning disk (tests/1-mpm/scenes/spinning_disk.cfg) for 0.3 ms
  * (636 steps), stopped at step 300: by then each domain has turned 0.15
@@ -30,8 +31,8 @@ static void run_ok(const char *args)
 static void restart_gives_the_same_bytes(void **state)
 {
     (void)state;
-    static const char *const shapes[] = {"gimp", "cpdi"};
-    for (int k = 0; k < 2; k++) {
+    static const char *const shapes[] = {"gimp", "cpdi", "gimp run.transfer=apic"};
+    for (int k = 0; k < 3; k++) {
         char args[512];
         system("rm -rf " OUT "/full " OUT "/split");
         snprintf(args, sizeof args, SPIN " run.shape=%s -q -o " OUT "/full", shapes[k]);
