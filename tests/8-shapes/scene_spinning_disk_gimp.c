@@ -20,7 +20,7 @@
  * finer cells and more points per cell, not with a smaller time step.
  * Its source is the transfer (chapter 8, test_apic.c): a node's velocity
  * is the mass average of its points' velocities, w x (their mass centre)
- * in a spin, not w x x_i. The APIC transfer meets the target
+ * in a spin, not w x x_i. uGIMP with the APIC transfer meets the target
  * (scene_spinning_disk_apic.c); this test keeps the paper's transfer.
  *
  * What the test asserts by default, bounds set after that first run from
