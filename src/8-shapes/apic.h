@@ -27,7 +27,8 @@ typedef struct Apic {
 } Apic;
 
 /** The row "apic" of run.transfer, as the scene reader finds it (set-up
- *  replaces it by the run's own Apic::row). */
+ *  copies it into the run's own Apic::row, which RunSettings::transfer
+ *  then points to). */
 extern const Transfer transfer_apic;
 /** The row "flip", today's transfer: eq. 26 and 30, no state. */
 extern const Transfer transfer_flip;
@@ -51,9 +52,10 @@ void apic_gather(struct Sim *sim, int p, const Stencil *st);
  *         (xx, xy, yx, yy): B_p = L D_p at Task 0's position. */
 void apic_set_gradient(Sim *sim, int p, const double L[4]);
 
-/** @brief The run's angular momentum about the origin, per thickness as
- *         the masses are: sum_p m_p (x_p x v_p + B_p,yx - B_p,xy), which
- *         APIC conserves (Jiang et al. 2017). */
+/** @brief The angular momentum about the origin of a run with
+ *         run.transfer = "apic", per thickness as the masses are:
+ *         sum_p m_p (x_p x v_p + B_p,yx - B_p,xy), which APIC conserves
+ *         (Jiang et al. 2017). */
 double apic_angular_momentum(const Sim *sim);
 
 /**

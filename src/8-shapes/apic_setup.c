@@ -83,7 +83,8 @@ int apic_prepare(Sim *sim, void *state, char *err, size_t errlen)
 }
 /// [apic_prepare]
 
-/** Read run.transfer; "apic" subscribes its set-up. */
+/** Read run.transfer; "apic" subscribes its set-up, which sets
+ *  RunSettings::transfer to the run's own row. */
 static int transfer_read(Sim *sim, const config_setting_t *s, int index,
                          SceneReader *r)
 {
@@ -97,7 +98,6 @@ static int transfer_read(Sim *sim, const config_setting_t *s, int index,
         return -1;
     if (row != &transfer_apic)
         return 0;                       /* "flip": the paper's, nothing */
-    sim->scene.run.transfer = row;
     if (hooks_on_prepare(&sim->hooks, apic_prepare, NULL))
         return scene_error(r, s, "transfer", "too many set-up hooks");
     return 0;
