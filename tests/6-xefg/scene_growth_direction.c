@@ -23,10 +23,15 @@
  *   first segment turns from the crack's direction by Erdogan and Sih's
  *   angle for Griffith's K_I = sigma sqrt(pi a) cos^2 beta, K_II = sigma
  *   sqrt(pi a) sin beta cos beta within 3 degrees.
+ * - failed_integral_stops_the_run (tests/6-xefg/scenes/growth_bar.cfg
+ *   with direction = "hoop" and the ring made too thin to hold a Gauss
+ *   point): the run stops at the first event that reaches f_t, with a
+ *   diagnostic naming the direction and the crack, no segment added.
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "cohesive.h"
 #include "griffith.h"
@@ -182,12 +187,39 @@ static void inclined_kink_by_hoop_stress(void **state)
     tk_bounds_finish(&b);
 }
 
+/** An interaction integral that fails stops the run, naming the crack. */
+static void failed_integral_stops_the_run(void **state)
+{
+    (void)state;
+    const char *const over[] = {"run.time=0.3",
+                                "cracks.[0].cohesive.growth.direction=\"hoop\"",
+                                NULL};
+    Sim *s = tk_load_file("tests/6-xefg/scenes/growth_bar.cfg", over);
+    Xefg *x = xefg_of(s);
+    x->grow->k_radius = 1e-9;           /* no Gauss point in its ring */
+    int n0 = x->crack[0].n, rc = 0;
+    while (s->step < s->nsteps && (rc = sim_advance(s)) == 0)
+        ;
+    printf("  a failed integral: rc %d at step %ld (t = %g ms): \"%s = %g\"; "
+           "%d events, %d points\n", rc, s->fail.step, s->t,
+           s->fail.quantity ? s->fail.quantity : "(none)", s->fail.value,
+           x->grow->nevent, x->crack[0].n);
+    assert_true(rc != 0);
+    assert_non_null(s->fail.quantity);
+    assert_non_null(strstr(s->fail.quantity, "direction = \"hoop\" of crack"));
+    assert_true(s->fail.value == 0.0);
+    assert_int_equal(x->grow->nevent, 0);
+    assert_int_equal(x->crack[0].n, n0);
+    tk_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(dcb_grows_straight),
         cmocka_unit_test(kalthoff_first_kink),
         cmocka_unit_test(inclined_kink_by_hoop_stress),
+        cmocka_unit_test(failed_integral_stops_the_run),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
