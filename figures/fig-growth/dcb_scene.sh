@@ -14,7 +14,9 @@
 #            apart, the crack on a cell line between two rows; the first
 #            column of points (x = H/2) is opened, as the grid cannot hold
 #            material in XEFG; the crack cohesive, linear, G_f = 5e-5 N/mm
-#            (= G_c) and f_t = F_T MPa, segments of H (default).
+#            (= G_c) and f_t = F_T MPa, segments of H (default), the
+#            tip turned by the largest hoop stress of K_I, K_II
+#            (direction = "hoop", chapter 6b).
 # Each arm's end is moved, not loaded: the opening is the same function
 # of time for both methods (at x = 0 or x = H/2: the FEA puts its end
 # there, figures/fig-growth/dcb_fea.c).
@@ -50,7 +52,7 @@ awk -v m="$m" -v h="$h" -v ft="$ft" '
             xa = 0.0; xb = h; ya = 0.1 * h
             crack = sprintf("cracks = ( { points = ( [%s, 0.0], [50.0, 0.0] );\n" \
                 "             cohesive = { law = \"linear\"; f_t = %s; G_f = 5e-5;\n" \
-                "                          growth = { }; }; } );", f(-h), f(ft))
+                "                          growth = { direction = \"hoop\"; }; }; } );", f(-h), f(ft))
         }
         print  "materials = ( { name = \"soft\"; E = 0.1; nu = 0.33; rho = 1.5e-3; } );"
         printf "bodies = ( { name = \"dcb\"; material = \"soft\"; points_per_cell = %d;\n", ppc

@@ -23,9 +23,11 @@
 #      plot for a run whose path leaves the crack line by more than h: the
 #      FEA is for the straight crack).
 #
-# XEFG's DCB crack turns: Rankine's rule grows it normal to sigma_1, and
-# the DCB's positive T-stress puts sigma_1 along the crack (chapter 7b,
-# "CRAMP and XEFG, growing").  5.4 to 5.7 minutes of CPU time, 4.5 to
+# XEFG's tips grow where the hoop stress of K_I, K_II at them is largest
+# (direction = "hoop", chapter 6b).  Normal to sigma_1, the default, the
+# DCB's crack turned by 90 degrees at its first event (the DCB's positive
+# T-stress puts sigma_1 along the crack; chapter 7b, "CRAMP and XEFG,
+# growing") and the plate's first kink was 42.6 degrees.  5.4 to 5.7 minutes of CPU time, 4.5 to
 # 4.7 minutes on a shared two-core machine (6.3 when busier; the table
 # prints the load averages and the time); the longest run, XEFG's plate with f_t = 1000
 # MPa (86 events), takes most of it, and starts first.
@@ -40,7 +42,8 @@
 # node per cell of h, nodes h apart), and (d) compares them by what they
 # cost.  Each method grows by its own rule: CRAMP by half a cell when J
 # reaches G_c, XEFG by one node spacing when sigma_1 ahead of the tip
-# reaches the cohesive law's f_t (XEFG_FT, the linear law).
+# reaches the cohesive law's f_t (XEFG_FT, the linear law), both in the
+# direction of the largest hoop stress.
 #
 # The crack length: CRAMP's tip x (history.csv tipx_crack0_last, the tip
 # moves with the material, as tests/7-fracture/scene_growth_dcb.c reads
@@ -56,7 +59,9 @@
 # Environment: MPM (default build/stage7/mpm), MPM_H and XEFG_H (the
 # resolutions h, mm; default "2 1.5 1" each), XEFG_FT (the DCB's f_t, MPa;
 # default 1e-3), KX_FT (the Kalthoff plate's f_t values, MPa; default
-# "2000 1000"), JOBS (runs at a time, default 2), PLOT=0 (no figure),
+# "2000 1000"), KX_TIME (the plate's time, ms; default its scene's 0.09:
+# a shorter one for a quick look), JOBS (runs at a time, default 2),
+# PLOT=0 (no figure),
 # REUSE=1 (keep build/fig-growth and make only the runs it lacks: to
 # redraw the figure and its table after a change to this script).
 . "$(dirname "$0")/../lib.sh"
@@ -65,6 +70,7 @@ MPM_H=${MPM_H:-"2 1.5 1"}
 XEFG_H=${XEFG_H:-"2 1.5 1"}
 XEFG_FT=${XEFG_FT:-1e-3}
 KX_FT=${KX_FT:-"2000 1000"}
+KX_TIME=${KX_TIME:-0.09}
 JOBS=${JOBS:-2}
 RUNS=build/fig-growth
 txt=$OUT/fig-growth.txt
@@ -108,12 +114,12 @@ done
 # cores stay busy
 for ft in $(printf '%s\n' $KX_FT | sort -g); do
     job "kw-xefg-$ft" figures/fig-growth/kalthoff_xefg.cfg "cracks.[0].cohesive.f_t=$ft" \
-        run.snapshots=18
+        run.snapshots=18 "run.time=$KX_TIME"
 done
 for h in $(printf '%s\n' $XEFG_H | sort -g); do
     job "dcb-xefg-$h" "$RUNS/dcb_xefg_$h.cfg" run.history_every=5
 done
-job kw-mpm tests/7-fracture/scenes/kalthoff_half.cfg run.snapshots=18
+job kw-mpm tests/7-fracture/scenes/kalthoff_half.cfg run.snapshots=18 "run.time=$KX_TIME"
 for h in $MPM_H; do
     job "dcb-mpm-$h" "$RUNS/dcb_mpm_$h.cfg" run.history_every=5
 done
@@ -247,7 +253,7 @@ done
     echo "DCB: tests/7-fracture/scenes/dcb_growth.cfg (100 x 36 mm, a0 = 50 mm,"
     echo "E = 0.1 MPa, nu = 0.33, plane stress), its end opened to Delta(t), 600 ms."
     echo "CRAMP: J growth, G_c = 5e-5 N/mm, segments of half a cell, cells 100/N x h,"
-    echo "2 x 2 points.  XEFG: cohesive growth, linear law, G_f = 5e-5 N/mm,"
+    echo "2 x 2 points.  XEFG: cohesive growth, linear law, G_f = 5e-5 N/mm, direction = \"hoop\","
     echo "f_t = $XEFG_FT MPa (E G_f / f_t^2 = $(awk -v f="$XEFG_FT" 'BEGIN { printf "%.3g", 0.1 * 5e-5 / (f * f) }') mm; arm 18 mm), segments of h, nodes h"
     echo "apart.  FEA: Q4, 0.5 x 0.25 mm, G(a) = G_c at Delta = C sqrt(2 B G_c / C'),"
     echo "the end at x = 0 (CRAMP) or h/2 (XEFG).  Delta at which the crack of length a"
@@ -283,10 +289,10 @@ done
     echo "off\": more than h, so the straight crack's FEA does not apply to the row;"
     echo "RMS over a = $AS; -: not reached)"
     echo
-    echo "Kalthoff-Winkler, the upper half, 90 us: CRAMP tests/7-fracture/scenes/"
+    echo "Kalthoff-Winkler, the upper half, $(awk -v t="$KX_TIME" 'BEGIN { print t * 1000 }') us: CRAMP tests/7-fracture/scenes/"
     echo "kalthoff_half.cfg (G_c = 22.1 N/mm, cells of 1 mm, 2 x 2 points); XEFG"
     echo "figures/fig-growth/kalthoff_xefg.cfg (linear law, G_f = 22.1 N/mm, f_t as"
-    echo "listed, nodes 1 mm apart).  Kink: the first new segment's angle to the notch,"
+    echo "listed, nodes 1 mm apart, direction = \"hoop\").  Kink: the first new segment's angle to the notch,"
     echo "from the first snapshot that holds it (the experiment: about 70 degrees)."
     echo
     printf '%-5s %5s %5s %7s %6s %9s %5s  %s\n' method "f_t" steps "loop s" events "first us" kink "tip at the end (mm)"
@@ -321,6 +327,6 @@ kx=""
 for ft in $KX_FT; do kx="$kx $ft"; done
 kkm=$(awk -F, '$1 == "kw-mpm" { print $8 }' "$kw")
 kkx=$(for ft in $KX_FT; do awk -F, -v r="kw-xefg-$ft" '$1 == r { k = $8 } END { printf "%s ", k == "" ? "-" : k }' "$kw"; done)
-gnuplot -e "runs='$RUNS'; out='$OUT/fig-growth.png'; hm='${MPM_H##* }'; hx='${XEFG_H##* }'; kx='${kx# }'; ft='$XEFG_FT'; kkm='${kkm:--}'; kkx='${kkx% }'" \
+gnuplot -e "runs='$RUNS'; out='$OUT/fig-growth.png'; kxt=$(awk -v t="$KX_TIME" 'BEGIN { print t * 1000 }'); hm='${MPM_H##* }'; hx='${XEFG_H##* }'; kx='${kx# }'; ft='$XEFG_FT'; kkm='${kkm:--}'; kkx='${kkx% }'" \
     figures/fig-growth/plot.gp || exit 1
 echo "fig-growth: $OUT/fig-growth.png, $txt ($(fig_since "$t_start") s)"

@@ -1,5 +1,6 @@
 # make fig-growth's plot (figures/fig-growth/make.sh writes the data):
-#   gnuplot -e "runs='build/fig-growth'; out='...png'; hm='1'; hx='1'; kx='2000 1000'; ft='1e-3'; kkm='70.7'; kkx='- 42.6'" plot.gp
+#   gnuplot -e "runs='build/fig-growth'; out='...png'; kxt=90; hm='1'; hx='1'; kx='2000 1000'; ft='1e-3'; kkm='70.7'; kkx='- 70.5'" plot.gp
+# (kxt: the plate's time, microseconds)
 # (kkm, kkx: the first kinks, degrees, of CRAMP and of each XEFG f_t; - none)
 # (a) DCB: crack length against the opening, CRAMP and XEFG (finest h of
 #     each) and the FEA's G(a) = G_c; (b) the DCB's paths; (c) Kalthoff-
@@ -40,7 +41,7 @@ plot runs.'/path_dcb-mpm.txt' using 1:2 with lines lw 3 lc rgb cm title sprintf(
 unset object 1
 
 # (c)
-set title "(c) Kalthoff-Winkler, upper half: crack paths at 90 {/Symbol m}s"
+set title sprintf("(c) Kalthoff-Winkler, upper half: crack paths at %g {/Symbol m}s", kxt)
 set xlabel "x (mm), along the impact (struck at x = 0, 0 < y < 25)"
 set ylabel "y (mm), from the symmetry line"
 set xrange [0:100]
@@ -75,6 +76,7 @@ set key top right opaque
 plot runs.'/plot_cost.txt' index 0 using 1:(100 * $2) with linespoints lw 2 pt 7 ps 1.3 lc rgb cm title "CRAMP, |error| at the first event (a = 50 mm)", \
      '' index 0 using 1:(100 * $3) with linespoints lw 2 dt 2 pt 6 ps 1.3 lc rgb cm title "CRAMP, RMS error at a = 54, 58, 62, 66 mm", \
      '' index 0 using 1:(100 * $2):4 with labels offset 0,-1 tc rgb cm notitle, \
-     '' index 1 using 1:(100 * $2) with linespoints lw 2 pt 5 ps 1.3 lc rgb cx title "XEFG, |error| at the first event (then the path turns)", \
+     '' index 1 using 1:(100 * $2) with linespoints lw 2 pt 5 ps 1.3 lc rgb cx title "XEFG, |error| at the first event (a = 50 mm)", \
+     '' index 1 using 1:(100 * $3) with linespoints lw 2 dt 2 pt 4 ps 1.3 lc rgb cx title "XEFG, RMS error at a = 54, 58, 62, 66 mm", \
      '' index 1 using 1:(100 * $2):4 with labels offset 0,-1 tc rgb cx notitle
 unset multiplot

@@ -4,7 +4,8 @@
  *        xefg.md 2.3-2.4; the transcript stops at eq. 32, so when, where
  *        and how a tip grows are our choices): a tip grows by one segment
  *        when the maximum principal stress averaged ahead of it reaches
- *        the law's f_t, normal to that stress; the new segment starts
+ *        the law's f_t, normal to that stress or (direction = "hoop") by
+ *        the largest hoop stress of K_I, K_II; the new segment starts
  *        closed, on the elastic branch of the intrinsic law, and the
  *        discretisation is updated around it only, in room reserved at
  *        set-up.
@@ -23,6 +24,8 @@ typedef struct XefgGrowthSettings {
     int on;            /**< the crack has one */
     double length;     /**< length of a new segment (0: one node spacing) */
     int max_segments;  /**< most segments the crack may add (0: the default) */
+    int hoop;          /**< direction = "hoop": where by the largest hoop
+                            stress of K_I, K_II (0: normal to sigma_1) */
     int line;          /**< line of the group, for messages */
 } XefgGrowthSettings;
 
@@ -33,6 +36,8 @@ typedef struct GrowthEvent {
     long step;         /**< the step after which it grew */
     double t;          /**< the time */
     double sigma1;     /**< the averaged sigma_1 that made it grow */
+    double KI;         /**< K_I at the tip (direction = "hoop"; else 0) */
+    double KII;        /**< K_II at the tip (direction = "hoop"; else 0) */
     double x0;         /**< the old tip: x */
     double y0;         /**< the old tip: y */
     double x1;         /**< the new tip: x */
@@ -47,6 +52,8 @@ typedef struct Growth {
     int ncrack;              /**< entries of set */
     XefgGrowthSettings *set;     /**< per crack (on = 0: the crack stays) */
     double radius;           /**< the averaging radius ahead of a tip */
+    double k_radius;         /**< r_d of the interaction integral that
+                                  K_I, K_II of direction = "hoop" take */
     double h;                /**< the node spacing */
     int *point_cap;          /**< per crack: room for points of its line */
     int dof_cap;             /**< room for parameters */
@@ -124,6 +131,19 @@ int growth_tip_stress(const Growth *g, const Xefg *x, int c, int end,
  */
 double growth_criterion(const double s[3], const double ahead[2],
                         double dir[2]);
+
+/**
+ * @brief Where a tip grows under direction = "hoop" (our choice, chapter
+ *        6b): K_I and K_II at end @p end of crack @p c by the interaction
+ *        integral (xefg_stress_intensity(), r_d = Growth::k_radius), into
+ *        @p K, and the unit direction @p dir turned from @p ahead by the
+ *        angle of largest hoop stress, hoop_angle() (Erdogan and Sih
+ *        1963), K_I < 0 counting as 0 as for CRAMP's cracks (chapter 7b).
+ * @return 0, or -1 when the integral fails (its ring holds no Gauss point
+ *         or two materials).
+ */
+int growth_hoop_direction(const Sim *sim, const Growth *g, int c, int end,
+                          const double ahead[2], double K[2], double dir[2]);
 
 /**
  * @brief After a step: every growing tip whose criterion reaches f_t grows

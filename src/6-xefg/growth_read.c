@@ -4,7 +4,9 @@
  *        read by cohesive_read()), checked on input: the length of a new
  *        segment and the most segments the crack may add. It sits in the
  *        law's group, so a growing crack has a law (growth_build() checks
- *        again at set-up). CRAMP's `cracks.[k].growth` is stage 7's.
+ *        again at set-up); and where a tip grows, direction = "principal"
+ *        (normal to sigma_1, the default) or "hoop" (the largest hoop
+ *        stress of K_I, K_II). CRAMP's `cracks.[k].growth` is stage 7's.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -13,7 +15,8 @@
 #include "growth.h"
 #include "scene_read.h"
 
-const char *const growth_keys[] = {"length", "max_segments", NULL};
+const char *const growth_keys[] = {"length", "max_segments", "direction",
+                                   NULL};
 
 static void growth_release(void *state)
 {
@@ -57,7 +60,8 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
 {
     if (config_setting_type(s) != CONFIG_TYPE_GROUP)
         return scene_error(r, s, "growth", "expected a group { length = 0.5; "
-                           "max_segments = 20; } (both optional)");
+                           "max_segments = 20; direction = \"hoop\"; } (all "
+                           "optional)");
     if (scene_check_keys(r, s, growth_keys))
         return -1;
     Growth *g = growth_make(sim, index);
@@ -65,11 +69,21 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
         return scene_error(r, s, "growth", "out of memory");
     XefgGrowthSettings *set = &g->set[index];
     double length = 0.0, most = 0.0;
-    *set = (XefgGrowthSettings){1, 0.0, 0, (int)config_setting_source_line(s)};
+    const char *direction = "principal";
+    *set = (XefgGrowthSettings){1, 0.0, 0, 0,
+                                (int)config_setting_source_line(s)};
     int has_length = scene_number(r, s, "length", 0, 0.0, &length);
     int has_most = scene_number(r, s, "max_segments", 0, 0.0, &most);
-    if (has_length < 0 || has_most < 0)
+    if (has_length < 0 || has_most < 0 ||
+        scene_string(r, s, "direction", 0, &direction) < 0)
         return -1;
+    if (strcmp(direction, "hoop") == 0)
+        set->hoop = 1;
+    else if (strcmp(direction, "principal") != 0)
+        return scene_error(r, at(s, "direction"), "direction", "\"%s\": "
+                           "expected \"principal\" (normal to sigma_1, the "
+                           "default) or \"hoop\" (the largest hoop stress of "
+                           "K_I, K_II at the tip)", direction);
     if (has_length && !(length > 0.0 && isfinite(length)))
         return scene_error(r, at(s, "length"), "length", "%g: the length of a "
                            "new segment must be positive (leave it out for "

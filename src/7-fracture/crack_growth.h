@@ -9,6 +9,7 @@
 
 #include <libconfig.h>
 
+#include "hoop_angle.h"
 #include "j_integral.h"
 #include "scene_include.h"
 
@@ -67,18 +68,6 @@ typedef struct CrackGrowth {
 
 /** The keys of a crack's growth group (NULL-ended). */
 extern const char *const crack_growth_keys[];
-
-/**
- * @brief The kink angle of maximum hoop stress (Erdogan and Sih 1963),
- *        the root of K_I sin(theta) + K_II (3 cos(theta) - 1) = 0 that
- *        makes sigma_thetatheta largest:
- *        theta_c = 2 atan[(K_I - sqrt(K_I^2 + 8 K_II^2)) / (4 K_II)].
- *        In the tip's frame of chapter 7 (x1 ahead, x2 its left normal),
- *        theta > 0 turns towards x2: pure mode II (K_II > 0) gives
- *        -70.53 degrees, K_II < 0 gives +70.53; K_II = 0 gives 0.
- * @return theta_c in radians.
- */
-double hoop_angle(double KI, double KII);
 
 /** @brief J, K_I and K_II that decide growth at tip @p T: the means over
  *         its contours. */

@@ -2,10 +2,10 @@
  * Exercise "hoop angle" (chapter 7b): where a crack kinks.
  * Copy this file, fill in hoop_angle(), and run
  *     make exercise EX=7-fracture/hoop-angle SOLUTION=your_copy.c
- * The contract is in src/7-fracture/crack_growth.h; README.md says what
+ * The contract is in src/6-xefg/hoop_angle.h; README.md says what
  * is checked.
  */
-#include "crack_growth.h"
+#include "hoop_angle.h"
 
 double hoop_angle(double KI, double KII)
 {

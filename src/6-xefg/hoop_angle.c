@@ -1,11 +1,12 @@
 /**
  * @file hoop_angle.c
  * @brief Where a crack kinks: the direction of the largest hoop stress at
- *        the tip (Erdogan and Sih, J. Basic Eng. 85 (1963) 519-527).
+ *        the tip (Erdogan and Sih, J. Basic Eng. 85 (1963) 519-527); stage
+ *        6 grows cohesive cracks by it, stage 7 CRAMP cracks.
  */
 #include <math.h>
 
-#include "crack_growth.h"
+#include "hoop_angle.h"
 
 /// [hoop_angle]
 double hoop_angle(double KI, double KII)
