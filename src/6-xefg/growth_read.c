@@ -4,9 +4,9 @@
  *        read by cohesive_read()), checked on input: the length of a new
  *        segment and the most segments the crack may add. It sits in the
  *        law's group, so a growing crack has a law (growth_build() checks
- *        again at set-up); and where a tip grows, direction = "principal"
- *        (normal to sigma_1, the default) or "hoop" (the largest hoop
- *        stress of K_I, K_II). CRAMP's `cracks.[k].growth` is stage 7's.
+ *        again at set-up); and where a tip grows, direction = "hoop"
+ *        (the default: the largest hoop stress of K_I, K_II) or
+ *        "principal" (normal to sigma_1). CRAMP's `cracks.[k].growth` is stage 7's.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -69,7 +69,7 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
         return scene_error(r, s, "growth", "out of memory");
     XefgGrowthSettings *set = &g->set[index];
     double length = 0.0, most = 0.0;
-    const char *direction = "principal";
+    const char *direction = "hoop";
     *set = (XefgGrowthSettings){1, 0.0, 0, 0,
                                 (int)config_setting_source_line(s)};
     int has_length = scene_number(r, s, "length", 0, 0.0, &length);
@@ -81,9 +81,9 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
         set->hoop = 1;
     else if (strcmp(direction, "principal") != 0)
         return scene_error(r, at(s, "direction"), "direction", "\"%s\": "
-                           "expected \"principal\" (normal to sigma_1, the "
-                           "default) or \"hoop\" (the largest hoop stress of "
-                           "K_I, K_II at the tip)", direction);
+                           "expected \"hoop\" (the default: the largest hoop "
+                           "stress of K_I, K_II at the tip) or \"principal\" "
+                           "(normal to sigma_1)", direction);
     if (has_length && !(length > 0.0 && isfinite(length)))
         return scene_error(r, at(s, "length"), "length", "%g: the length of a "
                            "new segment must be positive (leave it out for "
