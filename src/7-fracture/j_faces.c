@@ -20,6 +20,7 @@
 
 #include "j_integral.h"
 
+/** pi */
 #define PI 3.14159265358979323846
 
 /** A segment turns from x1 when the sine of its angle to it exceeds
