@@ -112,6 +112,9 @@ int j_integral_prepare(Sim *sim, void *state, char *err, size_t errlen);
                        + rho (a_i + kappa v_i) u^m_i,1 q ]
    \endverbatim
  *
+ * At a tip whose crack turns inside the domain (JTip::kink), both gain
+ * the face terms of j_face_terms().
+ *
  * K_I = E' M^(I) / 2, K_II = E' M^(II) / 2 (E' = E in plane stress,
  * E / (1 - nu^2) in plane strain; Yau, Chen and Shih 1980), with E and nu
  * of each point's material (a linear elastic body about the tip).
@@ -128,6 +131,8 @@ int j_integral_evaluate(const Sim *sim, JState *S);
  *        axes: stress s[mode][i][j] and displacement gradient
  *        du[mode][i][j] = d u_i / d x_j.
  * @param T            the tip (its place and frame)
+ * @param c            its crack (behind a kink the cut of theta follows
+ *                     it: j_tip_angle())
  * @param m            the material about it (E, nu)
  * @param plane_strain 1 for plane strain, 0 for plane stress
  * @param x            where, x (mm)
