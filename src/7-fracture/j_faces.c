@@ -178,8 +178,7 @@ static void face_side(const Sim *sim, const JState *S, const JTip *T,
         JPoint jp;
         j_point_gradients(sim, S, p, &jp);
         double w = 1.0 - dist / R;
-        double W = 0.5 * (P->sxx[p] * P->exx[p] + P->syy[p] * P->eyy[p] +
-                          2.0 * P->sxy[p] * P->exy[p]);
+        double W = j_strain_energy(P, p);
         double T2 = 0.5 * (P->vx[p] * P->vx[p] + P->vy[p] * P->vy[p]);
         f->w += w;
         f->WT += w * (W + P->m[p] / P->vol[p] * T2);

@@ -126,6 +126,12 @@ void j_point_gradients(const Sim *sim, const JState *S, int p, JPoint *jp)
     }
 }
 
+double j_strain_energy(const Particles *P, int p)
+{
+    return 0.5 * (P->sxx[p] * P->exx[p] + P->syy[p] * P->eyy[p] +
+                  2.0 * P->sxy[p] * P->exy[p]);   /* linear elastic */
+}
+
 /// [j_weight]
 /* The weight: 1 within c - 1 cells, 0 from c cells on, linear across the
  * ring between in the "square distance" max(|x - x_t| / c dx, |y - y_t| /
@@ -189,8 +195,7 @@ int j_integral_evaluate(const Sim *sim, JState *S)
         double thick = sc->bodies[P->body[p]].thickness;
         double A = P->vol[p] / thick, mA = P->m[p] / thick; /* per thickness */
         double s[2][2] = {{P->sxx[p], P->sxy[p]}, {P->sxy[p], P->syy[p]}};
-        double W = 0.5 * (P->sxx[p] * P->exx[p] + P->syy[p] * P->eyy[p] +
-                          2.0 * P->sxy[p] * P->exy[p]);   /* linear elastic */
+        double W = j_strain_energy(P, p);
         double v[2] = {P->vx[p], P->vy[p]};
         double T2 = 0.5 * (v[0] * v[0] + v[1] * v[1]);    /* T / rho */
         for (int t = 0; t < S->ntips; t++) {

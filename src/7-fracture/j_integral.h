@@ -156,6 +156,10 @@ typedef struct JPoint {
  *         them in @p S. */
 void j_point_gradients(const Sim *sim, const JState *S, int p, JPoint *jp);
 
+/** @brief The strain energy density W = sigma_ij eps_ij / 2 of point
+ *         @p p (linear elastic). */
+double j_strain_energy(const Particles *P, int p);
+
 /** @brief The weight q of the domain of half-width @p c cells about tip
  *         @p T at (x, y), and its gradient @p dq. @return q. */
 double j_weight(const Grid *g, const JTip *T, int c, double x, double y,
