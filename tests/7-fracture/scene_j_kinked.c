@@ -33,7 +33,7 @@
  *     is 1-2 % from the exact infinitesimal kink at 45 degrees (Amestoy
  *     and Leblond 1992); the bound adds the 2 % of K that scene_k_inclined
  *     measures on a / 16.
- * The first run (2 minutes): J spread 0.94 % (2.43 % without the face
+ * The first run (2 minutes on a busy machine): J spread 0.94 % (2.43 % without the face
  * term), K within +0.97 % (K_I) and +1.40 % (K_II) of |k| from Cotterell
  * and Rice: those bounds hold. J against (K_I^2 + K_II^2) / E' MISSED
  * its 1 % bound: +1.48, +2.42, +2.51 % on 4, 6, 8 cells (the straight tip
