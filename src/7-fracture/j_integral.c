@@ -103,15 +103,7 @@ static void nodal_displacement(const Sim *sim, JState *S)
 }
 /// [j_nodal_displacement]
 
-/** What one point brings to J: its gradients and the rest. */
-typedef struct JPoint {
-    double D[2][2];   /**< displacement gradient du_i/dx_k */
-    double L[2][2];   /**< velocity gradient dv_i/dx_k */
-    double a[2];      /**< acceleration, from its nodes */
-} JPoint;
-
-/** The gradients of point @p p from the slots of its stencil (eq. 6). */
-static void point_gradients(const Sim *sim, const JState *S, int p, JPoint *jp)
+void j_point_gradients(const Sim *sim, const JState *S, int p, JPoint *jp)
 {
     const Grid *g = &sim->grid;
     Stencil st;
@@ -134,12 +126,17 @@ static void point_gradients(const Sim *sim, const JState *S, int p, JPoint *jp)
     }
 }
 
+double j_strain_energy(const Particles *P, int p)
+{
+    return 0.5 * (P->sxx[p] * P->exx[p] + P->syy[p] * P->eyy[p] +
+                  2.0 * P->sxy[p] * P->exy[p]);   /* linear elastic */
+}
+
 /// [j_weight]
-/** The weight q of the domain of half-width @p c cells about tip @p T at
- *  (x, y), and its gradient: 1 within c - 1 cells, 0 from c cells on,
- *  linear across the ring between in the "square distance" max(|x - x_t|
- *  / c dx, |y - y_t| / c dy). @return q. */
-static double weight(const Grid *g, const JTip *T, int c, double x, double y,
+/* The weight: 1 within c - 1 cells, 0 from c cells on, linear across the
+ * ring between in the "square distance" max(|x - x_t| / c dx, |y - y_t| /
+ * c dy). */
+double j_weight(const Grid *g, const JTip *T, int c, double x, double y,
                      double dq[2])
 {
     double sx = fabs(x - T->x) / (c * g->dx), sy = fabs(y - T->y) / (c * g->dy);
@@ -176,7 +173,11 @@ int j_integral_evaluate(const Sim *sim, JState *S)
     const Scene *sc = &sim->scene;
     if (j_integral_fit(S, g->nslots))
         return -1;
+    const Cracks *C = cracks_of(sim);
     j_integral_tips(sim, S);
+    for (int t = 0; t < S->ntips; t++)
+        j_tip_kink(g, &C->crack[S->tip[t].crack], &S->tip[t],
+                   widest(S, &S->tip[t]));
     nodal_displacement(sim, S);
     double kappa = sc->run.damping;
     int strain = sc->run.plane == PLANE_STRAIN;
@@ -184,6 +185,9 @@ int j_integral_evaluate(const Sim *sim, JState *S)
         memset(S->tip[t].J, 0, sizeof S->tip[t].J);
         memset(S->tip[t].KI, 0, sizeof S->tip[t].KI);   /* M^(I) until the end */
         memset(S->tip[t].KII, 0, sizeof S->tip[t].KII);
+        memset(S->tip[t].Jface, 0, sizeof S->tip[t].Jface);
+        memset(S->tip[t].KIface, 0, sizeof S->tip[t].KIface);
+        memset(S->tip[t].KIIface, 0, sizeof S->tip[t].KIIface);
     }
     for (int p = 0; p < P->n; p++) {
         int gradients = 0;
@@ -191,8 +195,7 @@ int j_integral_evaluate(const Sim *sim, JState *S)
         double thick = sc->bodies[P->body[p]].thickness;
         double A = P->vol[p] / thick, mA = P->m[p] / thick; /* per thickness */
         double s[2][2] = {{P->sxx[p], P->sxy[p]}, {P->sxy[p], P->syy[p]}};
-        double W = 0.5 * (P->sxx[p] * P->exx[p] + P->syy[p] * P->eyy[p] +
-                          2.0 * P->sxy[p] * P->exy[p]);   /* linear elastic */
+        double W = j_strain_energy(P, p);
         double v[2] = {P->vx[p], P->vy[p]};
         double T2 = 0.5 * (v[0] * v[0] + v[1] * v[1]);    /* T / rho */
         for (int t = 0; t < S->ntips; t++) {
@@ -201,7 +204,7 @@ int j_integral_evaluate(const Sim *sim, JState *S)
             if (!within(g, T, P->x[p], P->y[p], widest(S, T)))
                 continue;
             if (!gradients) {
-                point_gradients(sim, S, p, &jp);
+                j_point_gradients(sim, S, p, &jp);
                 gradients = 1;
             }
             double e[2] = {T->ex, T->ey};
@@ -218,8 +221,8 @@ int j_integral_evaluate(const Sim *sim, JState *S)
                depend on the contour: u^m_i,1, sigma_ij eps^m_ij and the
                inertia (a_i + kappa v_i) u^m_i,1 */
             double sa[2][2][2], dua[2][2][2], da[2][2], W12[2], ina[2];
-            k_auxiliary(T, &sc->mat[P->mat[p]], strain, P->x[p], P->y[p],
-                        sa, dua);
+            k_auxiliary(T, &C->crack[T->crack], &sc->mat[P->mat[p]], strain,
+                        P->x[p], P->y[p], sa, dua);
             for (int k = 0; k < 2; k++) {
                 W12[k] = ina[k] = 0.0;
                 for (int i = 0; i < 2; i++) {
@@ -231,7 +234,7 @@ int j_integral_evaluate(const Sim *sim, JState *S)
             }
             for (int m = 0; m < j->ncontours; m++) {
                 double dq[2];
-                double q = weight(g, T, j->contour[m], P->x[p], P->y[p], dq);
+                double q = j_weight(g, T, j->contour[m], P->x[p], P->y[p], dq);
                 if (q == 0.0)
                     continue;
                 double sdq = 0.0;        /* sigma_ij u_i,1 q_,j */
@@ -252,6 +255,10 @@ int j_integral_evaluate(const Sim *sim, JState *S)
             }
         }
     }
+    /* the faces behind a kink: their terms (j_faces.c) */
+    for (int t = 0; t < S->ntips; t++)
+        if (S->tip[t].kink)
+            j_face_terms(sim, S, &S->tip[t]);
     /* K_m = E' M^(m) / 2 (Irwin: M^(m) = 2 K_m / E'), E' of the material
        at the tip (the body the tip lies in; one material about it) */
     for (int t = 0; t < S->ntips; t++) {
@@ -261,6 +268,8 @@ int j_integral_evaluate(const Sim *sim, JState *S)
         for (int m = 0; m < S->set[T->crack].ncontours; m++) {
             T->KI[m] *= 0.5 * Ep;
             T->KII[m] *= 0.5 * Ep;
+            T->KIface[m] *= 0.5 * Ep;
+            T->KIIface[m] *= 0.5 * Ep;
         }
     }
     return 0;

@@ -10,6 +10,7 @@
 
 #include <libconfig.h>
 
+#include "cracks.h"
 #include "sim.h"
 
 struct SceneReader;
@@ -38,6 +39,14 @@ typedef struct JTip {
     double J[J_CONTOURS_MAX];     /**< the latest J per contour (N/mm) */
     double KI[J_CONTOURS_MAX];    /**< the latest K_I per contour (MPa mm^1/2) */
     double KII[J_CONTOURS_MAX];   /**< the latest K_II per contour */
+    int kink;                     /**< 0: the crack runs straight along x1
+                                       through the widest domain; k > 0:
+                                       its k-th segment back from the tip
+                                       (points k - 1 to k back) is the
+                                       first that turns (j_tip_kink()) */
+    double Jface[J_CONTOURS_MAX]; /**< the face term's part of J */
+    double KIface[J_CONTOURS_MAX];  /**< its part of K_I */
+    double KIIface[J_CONTOURS_MAX]; /**< its part of K_II */
 } JTip;
 
 /// [j_state]
@@ -55,6 +64,8 @@ typedef struct JState {
     int npoints;                  /**< points of X, Y */
     double *X;                    /**< first position x of each point */
     double *Y;                    /**< first position y */
+    int *near;                    /**< scratch: the points beside a kinked
+                                       tip's faces (j_faces.c) */
     int cap;                      /**< slots of the scratch below */
     double *mux;                  /**< per slot: sum m S u_x */
     double *muy;                  /**< per slot: sum m S u_y */
@@ -101,6 +112,9 @@ int j_integral_prepare(Sim *sim, void *state, char *err, size_t errlen);
                        + rho (a_i + kappa v_i) u^m_i,1 q ]
    \endverbatim
  *
+ * At a tip whose crack turns inside the domain (JTip::kink), both gain
+ * the face terms of j_face_terms().
+ *
  * K_I = E' M^(I) / 2, K_II = E' M^(II) / 2 (E' = E in plane stress,
  * E / (1 - nu^2) in plane strain; Yau, Chen and Shih 1980), with E and nu
  * of each point's material (a linear elastic body about the tip).
@@ -117,6 +131,8 @@ int j_integral_evaluate(const Sim *sim, JState *S);
  *        axes: stress s[mode][i][j] and displacement gradient
  *        du[mode][i][j] = d u_i / d x_j.
  * @param T            the tip (its place and frame)
+ * @param c            its crack (behind a kink the cut of theta follows
+ *                     it: j_tip_angle())
  * @param m            the material about it (E, nu)
  * @param plane_strain 1 for plane strain, 0 for plane stress
  * @param x            where, x (mm)
@@ -124,8 +140,54 @@ int j_integral_evaluate(const Sim *sim, JState *S);
  * @param s            out: the auxiliary stresses, per mode
  * @param du           out: the auxiliary displacement gradients, per mode
  */
-void k_auxiliary(const JTip *T, const Material *m, int plane_strain,
-                 double x, double y, double s[2][2][2], double du[2][2][2]);
+void k_auxiliary(const JTip *T, const Crack *c, const Material *m,
+                 int plane_strain, double x, double y, double s[2][2][2],
+                 double du[2][2][2]);
+
+/** What one point brings to J: its gradients and the rest. */
+typedef struct JPoint {
+    double D[2][2];   /**< displacement gradient du_i/dx_k */
+    double L[2][2];   /**< velocity gradient dv_i/dx_k */
+    double a[2];      /**< acceleration, from its nodes */
+} JPoint;
+
+/** @brief The gradients of point @p p from the slots of its stencil
+ *         (eq. 6), the slots' displacements as j_integral_evaluate() left
+ *         them in @p S. */
+void j_point_gradients(const Sim *sim, const JState *S, int p, JPoint *jp);
+
+/** @brief The strain energy density W = sigma_ij eps_ij / 2 of point
+ *         @p p (linear elastic). */
+double j_strain_energy(const Particles *P, int p);
+
+/** @brief The weight q of the domain of half-width @p c cells about tip
+ *         @p T at (x, y), and its gradient @p dq. @return q. */
+double j_weight(const Grid *g, const JTip *T, int c, double x, double y,
+                double dq[2]);
+
+/** @brief Where crack @p c, walked back from tip @p T through the square
+ *         of half-width @p cells cells about it, first turns away from
+ *         the tip's direction: sets JTip::kink. */
+void j_tip_kink(const Grid *g, const Crack *c, JTip *T, int cells);
+
+/** @brief The polar angle about tip @p T of the point (@p x1, @p x2) of
+ *         its frame, with the cut along the crack @p c: atan2(x2, x1) on a
+ *         crack straight through the domain; behind a kink (JTip::kink),
+ *         continued across the ray theta = pi (material there) to the
+ *         crack's own faces, so that the auxiliary fields are continuous
+ *         wherever the material is. @return theta (rad). */
+double j_tip_angle(const Crack *c, const JTip *T, double x1, double x2);
+
+/** @brief The face terms of J and of the interaction integrals at a
+ *         kinked tip (JTip::kink > 0), added to JTip::J, JTip::KI and
+ *         JTip::KII (the latter still M^(I), M^(II)) and kept in
+ *         JTip::Jface, JTip::KIface, JTip::KIIface: over the faces behind
+ *         the kink, traction-free,
+ *         int (W + T) m_1 q ds for J and
+ *         int (sigma_ij eps^m_ij m_1 - sigma^m_ij m_j u_i,1) q ds for M^(m),
+ *         m the normal out of the material; the fields on each face from
+ *         the points beside it. */
+void j_face_terms(const Sim *sim, const JState *S, JTip *T);
 
 /** @brief Make the scratch hold @p slots field slots (never shrinks).
  *  @return 0, or -1 when out of memory. */

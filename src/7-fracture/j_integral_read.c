@@ -167,7 +167,9 @@ int j_integral_prepare(Sim *sim, void *state, char *err, size_t errlen)
     free(S->Y);
     S->X = malloc(sizeof(double) * (size_t)(S->npoints + 1));
     S->Y = malloc(sizeof(double) * (size_t)(S->npoints + 1));
-    if (!S->X || !S->Y)
+    free(S->near);
+    S->near = malloc(sizeof(int) * (size_t)(S->npoints + 1));
+    if (!S->X || !S->Y || !S->near)
         goto oom;
     memcpy(S->X, sim->pts.x, sizeof(double) * (size_t)S->npoints);
     memcpy(S->Y, sim->pts.y, sizeof(double) * (size_t)S->npoints);
@@ -197,6 +199,7 @@ void j_integral_release(void *state)
     free(S->tip);
     free(S->X);
     free(S->Y);
+    free(S->near);
     free(S->mux);
     free(S->muy);
     free(S->m);

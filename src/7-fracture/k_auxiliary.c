@@ -12,16 +12,18 @@
 #include "j_integral.h"
 
 /// [k_auxiliary]
-void k_auxiliary(const JTip *T, const Material *m, int plane_strain,
-                 double x, double y, double s[2][2][2], double du[2][2][2])
+void k_auxiliary(const JTip *T, const Crack *c, const Material *m,
+                 int plane_strain, double x, double y, double s[2][2][2],
+                 double du[2][2][2])
 {
     double e1[2] = {T->ex, T->ey}, e2[2] = {-T->ey, T->ex};  /* x2: left */
     double dx = x - T->x, dy = y - T->y;
     double x1 = e1[0] * dx + e1[1] * dy, x2 = e2[0] * dx + e2[1] * dy;
     /* theta from x1 towards x2, +-pi on the faces: e1, e2 are a
      * right-handed frame at either end of the crack (e1 ahead of the tip,
-     * j_integral_tips()), so atan2 needs no turn at a crack's first point */
-    double r = hypot(x1, x2), theta = atan2(x2, x1);
+     * j_integral_tips()), so atan2 needs no turn at a crack's first point;
+     * behind a kink the cut follows the crack (j_tip_angle()) */
+    double r = hypot(x1, x2), theta = j_tip_angle(c, T, x1, x2);
     double mu = m->E / (2.0 * (1.0 + m->nu));
     double kappa = plane_strain ? 3.0 - 4.0 * m->nu
                                 : (3.0 - m->nu) / (1.0 + m->nu);
