@@ -38,7 +38,7 @@
  * and Rice: those bounds hold. J against (K_I^2 + K_II^2) / E' MISSED
  * its 1 % bound: +1.48, +2.42, +2.51 % on 4, 6, 8 cells (the straight tip
  * of the same run: +0.98, +0.88, +0.85 %). That bound is open, not met:
- * the test prints it as OPEN and does not assert it (chapter 7b, "A
+ * the test prints it as OPEN and asserts it only with KINK_OPEN=1 (chapter 7b, "A
  * kinked crack", says what we know of it). Red with the face term of J
  * turned in sign (the spread goes over 1 %).
  * The straight tip (the first point) is printed, not bounded: the kink
@@ -295,9 +295,14 @@ static void j_and_k_hold_on_the_kinked_tip(void **state)
             hi0 = fmax(hi0, J0);
             kI += R.KI[1][k] / R.nd;
             kII += R.KII[1][k] / R.nd;
-            if (fabs(R.J[1][k] / JK - 1.0) > JK_TOL)  /* open: see the head */
+            if (getenv("KINK_OPEN"))        /* issue 28: see the head */
+                tk_bound(&bd, 4, fabs(R.J[1][k] / JK - 1.0) <= JK_TOL, "kinked "
+                         "tip, %d cells: J %+.2f %% of (K_I^2 + K_II^2) / E' "
+                         "(bound 1 %%)", R.cells[k], 100 * (R.J[1][k] / JK - 1.0));
+            else if (fabs(R.J[1][k] / JK - 1.0) > JK_TOL)
                 printf("    OPEN: kinked tip, %d cells: J %+.2f %% of (K_I^2 + "
-                       "K_II^2) / E' (bound 1 %%, missed since the first run)\n",
+                       "K_II^2) / E' (bound 1 %%, missed since the first run; "
+                       "KINK_OPEN=1 asserts it)\n",
                        R.cells[k], 100 * (R.J[1][k] / JK - 1.0));
         }
     double spread = (hi - lo) / (0.5 * (hi + lo)), spread0 = (hi0 - lo0) / (0.5 * (hi0 + lo0));
