@@ -43,7 +43,7 @@ static void add_point_loads(Sim *sim)
 static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what);
 static void extrapolate_strips(Sim *sim, unsigned what);
 
-/// [extrapolate]
+/// [owns]
 /** The nodes [lo, hi) that a thread owns (strips.h). */
 typedef struct Owned {
     int lo;           /**< first node */
@@ -59,11 +59,14 @@ static inline int owns(const Grid *g, const Owned *own, int s)
     int node = grid_slot_node(g, s);
     return node >= own->lo && node < own->hi;
 }
+/// [owns]
 
+/// [extrapolate]
 /** One point's share of Tasks 1 and 3 over the @p n nodes of its stencil
  *  (those of @p own, or all): mass and momentum (eq. 26), or momentum
- *  only (eq. 31), and force (eq. 28), as @p what asks. */
-static inline void scatter_point(const Particles *P, Grid *g, int p,
+ *  only (eq. 31), and force (eq. 28), as @p what asks. Inlined at every
+ *  call, so that a constant NULL @p own costs nothing. */
+static inline __attribute__((always_inline)) void scatter_point(const Particles *P, Grid *g, int p,
                                  const Stencil *st, int n, unsigned what,
                                  const Owned *own)
 {
@@ -118,7 +121,9 @@ void extrapolate(Sim *sim, unsigned what)
     if (what & EXTRAP_FORCE)            /* after every point, as on one */
         add_point_loads(sim);
 }
+/// [extrapolate]
 
+/// [extrapolate_strips]
 /** The scatters on threads: strip t's thread visits the points that reach
  *  its nodes in increasing index (Task 0 listed them) and adds to its own
  *  nodes only, so that each node sums what it sums on one thread, in the
@@ -138,7 +143,7 @@ static void extrapolate_strips(Sim *sim, unsigned what)
         }
     }
 }
-/// [extrapolate]
+/// [extrapolate_strips]
 
 /** The scatters through a stencil of run.shape's table (chapter 8). */
 static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what)
