@@ -47,7 +47,7 @@ static void chunk(int np, int T, int c, int *lo, int *hi)
 
 /** Cut the node rows into at most Strips::cap strips of about equal
  *  points, each @p w rows or more, so that a point's rows meet at most
- *  two strips. @return how many. */
+ *  two strips. @return how many, or 0 when fewer than two. */
 static int cut_rows(Strips *S, const Grid *g, int np, int w)
 {
     int T = S->cap, ns = g->nny / w < T ? g->nny / w : T, t = 0;
@@ -67,7 +67,7 @@ static int cut_rows(Strips *S, const Grid *g, int np, int w)
             seen += S->rows[(size_t)c * g->ncy + r];
     }
     S->first_node[t + 1] = g->nnodes;
-    return t + 1;
+    return t > 0 ? t + 1 : 0;           /* one strip: one thread */
 }
 
 /// [strips_bin]
