@@ -62,6 +62,16 @@ static inline int owns(const Grid *g, const Owned *own, int s)
 /// [owns]
 
 /// [extrapolate]
+/** The momentum that one pair adds to slot @p s (eq. 26 and 31): the
+ *  point's momentum (@p qx, @p qy) times S_ip; the one place to change
+ *  for another transfer of momentum. */
+static inline void momentum_pair(Grid *g, int s, double S, double qx,
+                                 double qy)
+{
+    g->px[s] += qx * S;
+    g->py[s] += qy * S;
+}
+
 /** One point's share of Tasks 1 and 3 over the @p n nodes of its stencil
  *  (those of @p own, or all): mass and momentum (eq. 26), or momentum
  *  only (eq. 31), and force (eq. 28), as @p what asks. Inlined at every
@@ -78,8 +88,7 @@ static inline __attribute__((always_inline)) void scatter_point(const Particles 
             if (!owns(g, own, s))
                 continue;
             g->m[s] += mp * st->S[a];                   /* eq. 26 */
-            g->px[s] += qx * st->S[a];
-            g->py[s] += qy * st->S[a];
+            momentum_pair(g, s, st->S[a], qx, qy);
         }
     } else if (what & EXTRAP_MOMENTUM) {                /* eq. 31 */
         double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
@@ -87,8 +96,7 @@ static inline __attribute__((always_inline)) void scatter_point(const Particles 
             int s = st->slot[a];
             if (!owns(g, own, s))
                 continue;
-            g->px[s] += qx * st->S[a];
-            g->py[s] += qy * st->S[a];
+            momentum_pair(g, s, st->S[a], qx, qy);
         }
     }
     if (what & EXTRAP_FORCE) {
