@@ -10,6 +10,13 @@
 
 #include "sim.h"
 
+/** Ints between two chunks' counters: a cache line or more, so that
+ *  threads counting at once do not share one. */
+static int stride_of(int T)
+{
+    return (T + 15) / 16 * 16;
+}
+
 int strips_init(Sim *sim)
 {
     Strips *S = &sim->strips;
@@ -26,10 +33,10 @@ int strips_init(Sim *sim)
     S->list = malloc(sizeof(int) * (2 * (size_t)np + 1));
     S->code = malloc(sizeof(int) * ((size_t)np + 1));
     S->rows = malloc(sizeof(int) * (size_t)T * (size_t)g->ncy);
-    S->count = malloc(sizeof(int) * (size_t)T * (size_t)T);
-    S->strip_of_row = malloc(sizeof(int) * (size_t)g->nny);
+    S->count = malloc(sizeof(int) * (size_t)T * (size_t)stride_of(T));
+    S->row_strips = malloc(sizeof(int) * (size_t)g->ncy);
     if (!S->first_node || !S->start || !S->list || !S->code || !S->rows ||
-        !S->count || !S->strip_of_row) {
+        !S->count || !S->row_strips) {
         strips_free(S);
         return -1;
     }
@@ -46,15 +53,16 @@ static void chunk(int np, int T, int c, int *lo, int *hi)
 }
 
 /** Cut the node rows into at most Strips::cap strips of about equal
- *  points, each @p w rows or more, so that a point's rows meet at most
- *  two strips. @return how many, or 0 when fewer than two. */
-static int cut_rows(Strips *S, const Grid *g, int np, int w)
+ *  points, each 2 + 2 reach rows or more, so that a point's rows meet at
+ *  most two strips; give each cell row its strips (Strips::row_strips).
+ *  @return how many, or 0 when fewer than two. */
+static int cut_rows(Strips *S, const Grid *g, int np)
 {
-    int T = S->cap, ns = g->nny / w < T ? g->nny / w : T, t = 0;
+    int T = S->cap, w = 2 + 2 * S->reach, t = 0, first = 0;
+    int ns = g->nny / w < T ? g->nny / w : T;
     long long seen = 0;
     if (ns < 2)
         return 0;
-    int first = 0;
     S->first_node[0] = 0;
     for (int r = 0; r < g->nny; r++) {
         if (t + 1 < ns && r - first >= w && g->nny - r >= (ns - 1 - t) * w &&
@@ -62,12 +70,46 @@ static int cut_rows(Strips *S, const Grid *g, int np, int w)
             S->first_node[++t] = r * g->nnx;
             first = r;
         }
-        S->strip_of_row[r] = t;
         for (int c = 0; r < g->ncy && c < T; c++)
             seen += S->rows[(size_t)c * g->ncy + r];
     }
     S->first_node[t + 1] = g->nnodes;
+    int t0 = 0, t1 = 0, last = t;
+    for (int j = 0; j < g->ncy; j++) {  /* node rows j - reach .. j + 1 + reach */
+        int r0 = j - S->reach, r1 = j + 1 + S->reach;
+        while (t0 < last && S->first_node[t0 + 1] <= r0 * g->nnx)
+            t0++;
+        while (t1 < last && S->first_node[t1 + 1] <= r1 * g->nnx)
+            t1++;
+        S->row_strips[j] = 2 * t0 + (t1 != t0);
+    }
     return t > 0 ? t + 1 : 0;           /* one strip: one thread */
+}
+
+/** Where each chunk's points go in the lists: strip by strip, chunk by
+ *  chunk, counted from the cell rows' points. */
+static void offsets(Strips *S, const Grid *g, int ns)
+{
+    int T = S->cap, at = 0, stride = stride_of(T);
+    for (int c = 0; c < T; c++) {
+        int *count = &S->count[(size_t)c * stride];
+        const int *rows = &S->rows[(size_t)c * g->ncy];
+        for (int t = 0; t < ns; t++)
+            count[t] = 0;
+        for (int j = 0; j < g->ncy; j++) {
+            count[S->row_strips[j] >> 1] += rows[j];
+            count[(S->row_strips[j] >> 1) + 1] += (S->row_strips[j] & 1) * rows[j];
+        }
+    }
+    for (int t = 0; t < ns; t++) {
+        S->start[t] = at;
+        for (int c = 0; c < T; c++) {
+            int k = S->count[(size_t)c * stride + t];
+            S->count[(size_t)c * stride + t] = at;
+            at += k;
+        }
+    }
+    S->start[ns] = at;
 }
 
 /// [strips_bin]
@@ -81,48 +123,25 @@ void strips_bin(Sim *sim)
     if (T < 2 || np > S->npoints)
         return;                         /* one thread */
 #pragma omp parallel for num_threads(T) schedule(static, 1)
-    for (int c = 0; c < T; c++) {       /* the points of each cell row */
+    for (int c = 0; c < T; c++) {       /* each chunk's points per cell row */
         int lo, hi, *rows = &S->rows[(size_t)c * ncy];
         chunk(np, T, c, &lo, &hi);
         memset(rows, 0, sizeof(int) * (size_t)ncy);
         for (int p = lo; p < hi; p++)
             rows[S->code[p] = cell[p] / nnx]++;
     }
-    int ns = cut_rows(S, g, np, 2 + 2 * S->reach);
+    int ns = cut_rows(S, g, np);
     if (ns == 0)
         return;
-#pragma omp parallel for num_threads(T) schedule(static, 1)
-    for (int c = 0; c < T; c++) {       /* the strips each point reaches */
-        int lo, hi, *count = &S->count[(size_t)c * T];
-        chunk(np, T, c, &lo, &hi);
-        memset(count, 0, sizeof(int) * (size_t)T);
-        for (int p = lo; p < hi; p++) {
-            int j = S->code[p], r0 = j - S->reach, r1 = j + 1 + S->reach;
-            int t0 = S->strip_of_row[r0 < 0 ? 0 : r0];
-            int t1 = S->strip_of_row[r1 > g->nny - 1 ? g->nny - 1 : r1];
-            count[t0]++;
-            count[t1] += t1 != t0;
-            S->code[p] = 2 * t0 + (t1 != t0);
-        }
-    }
-    int at = 0;                         /* strip by strip, chunk by chunk */
-    for (int t = 0; t < ns; t++) {
-        S->start[t] = at;
-        for (int c = 0; c < T; c++) {
-            int k = S->count[(size_t)c * T + t];
-            S->count[(size_t)c * T + t] = at;
-            at += k;
-        }
-    }
-    S->start[ns] = at;
+    offsets(S, g, ns);
 #pragma omp parallel for num_threads(T) schedule(static, 1)
     for (int c = 0; c < T; c++) {       /* each chunk's points, in order */
-        int lo, hi, *count = &S->count[(size_t)c * T];
+        int lo, hi, *count = &S->count[(size_t)c * stride_of(T)];
         chunk(np, T, c, &lo, &hi);
         for (int p = lo; p < hi; p++) {
-            int t0 = S->code[p] >> 1;
+            int rs = S->row_strips[S->code[p]], t0 = rs >> 1;
             S->list[count[t0]++] = p;
-            if (S->code[p] & 1)
+            if (rs & 1)                 /* it reaches the next strip too */
                 S->list[count[t0 + 1]++] = p;
         }
     }
@@ -138,6 +157,6 @@ void strips_free(Strips *S)
     free(S->code);
     free(S->rows);
     free(S->count);
-    free(S->strip_of_row);
+    free(S->row_strips);
     memset(S, 0, sizeof *S);
 }

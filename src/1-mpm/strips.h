@@ -31,11 +31,12 @@ typedef struct Strips {
                            .. list[start[t + 1] - 1] */
     int *list;        /**< 2 per point: point indices, strip by strip,
                            increasing within each */
-    int *code;        /**< per point, scratch: its cell row, then its
-                           first strip and whether it reaches the next */
+    int *code;        /**< per point, scratch: its cell row */
     int *rows;        /**< cap per cell row: points of each chunk there */
-    int *count;       /**< cap x cap: list entries of chunk c in strip t */
-    int *strip_of_row; /**< per node row: the strip that owns it */
+    int *count;       /**< per chunk (a cache line apart), per strip: the
+                           next place of the chunk's points in list */
+    int *row_strips;  /**< per cell row: 2 x the first strip its points
+                           reach, + 1 when they reach the next one too */
 } Strips;
 /// [strips]
 
