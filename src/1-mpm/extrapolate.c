@@ -76,9 +76,9 @@ static inline void momentum_pair(Grid *g, int s, double S, double qx,
  *  (those of @p own, or all): mass and momentum (eq. 26), or momentum
  *  only (eq. 31), and force (eq. 28), as @p what asks. Inlined at every
  *  call, so that a constant NULL @p own costs nothing. */
-static inline __attribute__((always_inline)) void scatter_point(const Particles *P, Grid *g, int p,
-                                 const Stencil *st, int n, unsigned what,
-                                 const Owned *own)
+static inline __attribute__((always_inline)) void
+scatter_point(const Particles *P, Grid *g, int p, const Stencil *st, int n,
+              unsigned what, const Owned *own)
 {
     /* one loop for each case, so that the test is not made per node */
     if (what & EXTRAP_MASS) {

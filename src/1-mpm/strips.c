@@ -97,8 +97,10 @@ static void offsets(Strips *S, const Grid *g, int ns)
         for (int t = 0; t < ns; t++)
             count[t] = 0;
         for (int j = 0; j < g->ncy; j++) {
-            count[S->row_strips[j] >> 1] += rows[j];
-            count[(S->row_strips[j] >> 1) + 1] += (S->row_strips[j] & 1) * rows[j];
+            int rs = S->row_strips[j];
+            count[rs >> 1] += rows[j];
+            if (rs & 1)                 /* they reach the next strip too */
+                count[(rs >> 1) + 1] += rows[j];
         }
     }
     for (int t = 0; t < ns; t++) {
