@@ -132,23 +132,44 @@ void extrapolate(Sim *sim, unsigned what)
 /// [extrapolate]
 
 /// [extrapolate_strips]
+/** Strip @p t's scatters: its points in increasing index, through the
+ *  bilinear stencil (@p wide NULL, a constant after inlining) or @p wide;
+ *  a point that reaches no other strip (most) needs no test of its pairs. */
+static inline __attribute__((always_inline)) void
+scatter_strip(Sim *sim, int t, unsigned what, StencilFn wide)
+{
+    const Particles *P = &sim->pts;
+    const Strips *S = &sim->strips;
+    Grid *g = &sim->grid;
+    Owned own = {S->first_node[t], S->first_node[t + 1]};
+    for (int k = S->start[t]; k < S->start[t + 1]; k++) {
+        Stencil st;
+        int p = S->list[k], n = STENCIL_NODES;
+        if (wide) {
+            wide(sim, p, &st);
+            n = st.n;
+        } else
+            stencil_linear(sim, p, &st);
+        if (S->row_strips[S->code[p]] & 1)  /* at the strip's edge */
+            scatter_point(P, g, p, &st, n, what, &own);
+        else
+            scatter_point(P, g, p, &st, n, what, NULL);
+    }
+}
+
 /** The scatters on threads: strip t's thread visits the points that reach
  *  its nodes in increasing index (Task 0 listed them) and adds to its own
  *  nodes only, so that each node sums what it sums on one thread, in the
  *  same order. */
 static void extrapolate_strips(Sim *sim, unsigned what)
 {
-    const Particles *P = &sim->pts;
-    const Strips *S = &sim->strips;
-    Grid *g = &sim->grid;
+    StencilFn wide = sim->scene.run.stencil;
 #pragma omp parallel for num_threads(sim->threads) schedule(static, 1)
-    for (int t = 0; t < S->n; t++) {
-        Owned own = {S->first_node[t], S->first_node[t + 1]};
-        for (int k = S->start[t]; k < S->start[t + 1]; k++) {
-            Stencil st;
-            int p = S->list[k], n = stencil_of_point(sim, p, &st);
-            scatter_point(P, g, p, &st, n, what, &own);
-        }
+    for (int t = 0; t < sim->strips.n; t++) {
+        if (wide)                       /* another row of run.shape */
+            scatter_strip(sim, t, what, wide);
+        else                            /* the paper's four nodes */
+            scatter_strip(sim, t, what, NULL);
     }
 }
 /// [extrapolate_strips]

@@ -31,7 +31,7 @@ typedef struct Strips {
                            .. list[start[t + 1] - 1] */
     int *list;        /**< 2 per point: point indices, strip by strip,
                            increasing within each */
-    int *code;        /**< per point, scratch: its cell row */
+    int *code;        /**< per point: its cell row this step */
     int *rows;        /**< cap per cell row: points of each chunk there */
     int *count;       /**< per chunk (a cache line apart), per strip: the
                            next place of the chunk's points in list */
