@@ -68,6 +68,10 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
     /* the scene's threads win over OMP_NUM_THREADS (OpenMP's default) */
     sim->threads = sim->scene.run.threads ? sim->scene.run.threads
                                           : omp_get_max_threads();
+    if (strips_init(sim)) {           /* who writes which nodes (strips.h) */
+        snprintf(err, errlen, "%s: out of memory for the threads' strips", name);
+        return -1;
+    }
     sim_set_time_step(sim);
     return sim_check_time_step(sim, err, errlen);
 }

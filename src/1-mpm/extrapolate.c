@@ -3,10 +3,11 @@
  * @brief Point to grid: masses, momenta, forces (and volumes) of every
  *        field slot (Tasks 1 and 3, eq. 8-9, 26 and 28).
  *
- * Each point writes only to the slots of its own stencil. The loops visit
- * points in index order; a threaded loop will visit points binned by cell
- * with the cells coloured so that no two threads share a node, and call
- * the same per-point functions.
+ * Each point writes only to the slots of its own stencil. On one thread the
+ * loops visit the points in index order; on several, each thread owns a
+ * strip of node rows (strips.h), visits the points that reach it in the
+ * same order and adds only to its own nodes, through the same per-point
+ * function: the same sums in the same order at every node.
  */
 #include "step.h"
 #include "transfer.h"
@@ -41,29 +42,62 @@ static void add_point_loads(Sim *sim)
 }
 
 static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what);
+static void extrapolate_strips(Sim *sim, unsigned what);
+
+/// [owns]
+/** The nodes [lo, hi) that a thread owns (strips.h). */
+typedef struct Owned {
+    int lo;           /**< first node */
+    int hi;           /**< one past the last */
+} Owned;
+
+/** Does a pair that adds to slot @p s write a node of @p own? Always when
+ *  @p own is NULL (one thread: a constant that the compiler folds). */
+static inline int owns(const Grid *g, const Owned *own, int s)
+{
+    if (!own)
+        return 1;
+    int node = grid_slot_node(g, s);
+    return node >= own->lo && node < own->hi;
+}
+/// [owns]
 
 /// [extrapolate]
-/** One point's share of Tasks 1 and 3 over the @p n nodes of its stencil:
- *  mass and momentum (eq. 26), or momentum only (eq. 31), and force
- *  (eq. 28), as @p what asks. */
-static inline void scatter_point(const Particles *P, Grid *g, int p,
-                                 const Stencil *st, int n, unsigned what)
+/** The momentum that one pair adds to slot @p s (eq. 26 and 31): the
+ *  point's momentum (@p qx, @p qy) times S_ip; the one place to change
+ *  for another transfer of momentum. */
+static inline void momentum_pair(Grid *g, int s, double S, double qx,
+                                 double qy)
+{
+    g->px[s] += qx * S;
+    g->py[s] += qy * S;
+}
+
+/** One point's share of Tasks 1 and 3 over the @p n nodes of its stencil
+ *  (those of @p own, or all): mass and momentum (eq. 26), or momentum
+ *  only (eq. 31), and force (eq. 28), as @p what asks. Inlined at every
+ *  call, so that a constant NULL @p own costs nothing. */
+static inline __attribute__((always_inline)) void
+scatter_point(const Particles *P, Grid *g, int p, const Stencil *st, int n,
+              unsigned what, const Owned *own)
 {
     /* one loop for each case, so that the test is not made per node */
     if (what & EXTRAP_MASS) {
         double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
         for (int a = 0; a < n; a++) {
             int s = st->slot[a];
+            if (!owns(g, own, s))
+                continue;
             g->m[s] += mp * st->S[a];                   /* eq. 26 */
-            g->px[s] += qx * st->S[a];
-            g->py[s] += qy * st->S[a];
+            momentum_pair(g, s, st->S[a], qx, qy);
         }
     } else if (what & EXTRAP_MOMENTUM) {                /* eq. 31 */
         double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
         for (int a = 0; a < n; a++) {
             int s = st->slot[a];
-            g->px[s] += qx * st->S[a];
-            g->py[s] += qy * st->S[a];
+            if (!owns(g, own, s))
+                continue;
+            momentum_pair(g, s, st->S[a], qx, qy);
         }
     }
     if (what & EXTRAP_FORCE) {
@@ -71,6 +105,8 @@ static inline void scatter_point(const Particles *P, Grid *g, int p,
         double sxx = P->sxx[p], syy = P->syy[p], sxy = P->sxy[p];
         for (int a = 0; a < n; a++) {                   /* eq. 28 */
             int s = st->slot[a];
+            if (!owns(g, own, s))
+                continue;
             g->fx[s] -= v * (sxx * st->Gx[a] + sxy * st->Gy[a]);
             g->fy[s] -= v * (sxy * st->Gx[a] + syy * st->Gy[a]);
         }
@@ -81,18 +117,63 @@ void extrapolate(Sim *sim, unsigned what)
 {
     const Particles *P = &sim->pts;
     Grid *g = &sim->grid;
-    if (sim->scene.run.stencil)         /* another row of run.shape */
+    if (sim->strips.n > 0 && !sim->scene.run.transfer)  /* several threads */
+        extrapolate_strips(sim, what);  /* (strips.h; APIC's term: one) */
+    else if (sim->scene.run.stencil)    /* another row of run.shape */
         extrapolate_wide(sim, sim->scene.run.stencil, what);
     else
         for (int p = 0; p < P->n; p++) {  /* the paper's four nodes */
             Stencil st;
             stencil_linear(sim, p, &st);
-            scatter_point(P, g, p, &st, STENCIL_NODES, what);
+            scatter_point(P, g, p, &st, STENCIL_NODES, what, NULL);
         }
-    if (what & EXTRAP_FORCE)
+    if (what & EXTRAP_FORCE)            /* after every point, as on one */
         add_point_loads(sim);
 }
 /// [extrapolate]
+
+/// [extrapolate_strips]
+/** Strip @p t's scatters: its points in increasing index, through the
+ *  bilinear stencil (@p wide NULL, a constant after inlining) or @p wide;
+ *  a point that reaches no other strip (most) needs no test of its pairs. */
+static inline __attribute__((always_inline)) void
+scatter_strip(Sim *sim, int t, unsigned what, StencilFn wide)
+{
+    const Particles *P = &sim->pts;
+    const Strips *S = &sim->strips;
+    Grid *g = &sim->grid;
+    Owned own = {S->first_node[t], S->first_node[t + 1]};
+    for (int k = S->start[t]; k < S->start[t + 1]; k++) {
+        Stencil st;
+        int p = S->list[k], n = STENCIL_NODES;
+        if (wide) {
+            wide(sim, p, &st);
+            n = st.n;
+        } else
+            stencil_linear(sim, p, &st);
+        if (S->row_strips[S->code[p]] & 1)  /* at the strip's edge */
+            scatter_point(P, g, p, &st, n, what, &own);
+        else
+            scatter_point(P, g, p, &st, n, what, NULL);
+    }
+}
+
+/** The scatters on threads: strip t's thread visits the points that reach
+ *  its nodes in increasing index (Task 0 listed them) and adds to its own
+ *  nodes only, so that each node sums what it sums on one thread, in the
+ *  same order. */
+static void extrapolate_strips(Sim *sim, unsigned what)
+{
+    StencilFn wide = sim->scene.run.stencil;
+#pragma omp parallel for num_threads(sim->threads) schedule(static, 1)
+    for (int t = 0; t < sim->strips.n; t++) {
+        if (wide)                       /* another row of run.shape */
+            scatter_strip(sim, t, what, wide);
+        else                            /* the paper's four nodes */
+            scatter_strip(sim, t, what, NULL);
+    }
+}
+/// [extrapolate_strips]
 
 /** The scatters through a stencil of run.shape's table (chapter 8). */
 static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what)
@@ -103,7 +184,7 @@ static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what)
     for (int p = 0; p < P->n; p++) {
         Stencil st;
         wide(sim, p, &st);
-        scatter_point(P, g, p, &st, st.n, what);
+        scatter_point(P, g, p, &st, st.n, what, NULL);
         if (tr && (what & (EXTRAP_MASS | EXTRAP_MOMENTUM)))
             tr->scatter(sim, p, &st, g);    /* run.transfer (chapter 8) */
     }

@@ -11,6 +11,8 @@
 void grid_velocities(Sim *sim)
 {
     Grid *g = &sim->grid;
+    /* a slot writes only its own values: any number of threads */
+#pragma omp parallel for num_threads(sim->threads)
     for (int s = 0; s < g->nslots; s++) {
         unsigned fix = g->fixed[grid_slot_node(g, s)];
         if (fix & GRID_FIX_X)
@@ -32,6 +34,7 @@ void grid_momentum_update(Sim *sim)
     double dt = sim->dt, kappa = run->damping;
     double gs = gravity_scale(run, sim->t + 0.5 * dt);  /* mid-step */
     double gx = run->gx * gs, gy = run->gy * gs;
+#pragma omp parallel for num_threads(sim->threads)
     for (int s = 0; s < g->nslots; s++) {
         double m = g->m[s];
         if (m <= 0.0) {

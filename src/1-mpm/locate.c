@@ -10,7 +10,10 @@ void locate_points(Sim *sim)
 {
     Particles *P = &sim->pts;
     const Grid *g = &sim->grid;
+    /* a point writes only its own arrays: any number of threads */
+#pragma omp parallel for num_threads(sim->threads)
     for (int p = 0; p < P->n; p++)
         P->cell[p] = shape_locate(g, P->x[p], P->y[p], &P->xi[p], &P->eta[p]);
+    strips_bin(sim);    /* the points of each thread's nodes (strips.h) */
 }
 /// [locate_points]

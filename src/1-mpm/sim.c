@@ -55,6 +55,7 @@ void sim_free(Sim *sim)
             sim->ext[k].release(sim->ext[k].state);
     sim->next = 0;
     fields_free(&sim->fields);
+    strips_free(&sim->strips);
     particles_free(&sim->pts);
     grid_free(&sim->grid);
     scene_free(&sim->scene);

@@ -14,6 +14,7 @@
 #include "hooks.h"
 #include "particles.h"
 #include "scene.h"
+#include "strips.h"
 
 /** Most pieces of stage state a simulation carries. */
 #define SIM_MAX_EXT 8
@@ -41,6 +42,8 @@ typedef struct Sim {
     Grid grid;          /**< background grid */
     Hooks hooks;        /**< behaviour added by the stages of this build */
     FieldTable fields;  /**< velocity fields of the nodes (Task 1) */
+    Strips strips;      /**< the nodes each thread writes, the points of
+                             each (Task 0, strips.h) */
     SimExt ext[SIM_MAX_EXT]; /**< the stages' state, by name */
     int next;           /**< how many */
     double t;           /**< current time (ms) */

@@ -1,18 +1,22 @@
 /**
  * @file scene_threads.c
- * @brief The MPM step's point loops on several threads (run.threads): the
- *        same bytes on 1, 2, 3 and 4 threads, for every scheme, with and
- *        (on the stages that have them) without cracks and contact.
+ * @brief The MPM step on several threads (run.threads): the same bytes on
+ *        1, 2, 3 and 4 threads, for every scheme, with and (on the stages
+ *        that have them) without cracks and contact, with linear and
+ *        (stage 8) wider stencils.
  *
  * The point update (Task 5) and the stress update run on the threads: a
  * point writes only its own arrays, and an instability is recorded for
  * the lowest point, whatever thread met it (step_fail()). The scatters to
- * the grid stay in the points' order. So no number may depend on the
- * thread count: each scene is run on 1 to 4 threads with run.precision =
- * "full" and its output compared byte for byte, a run that goes unstable
- * (USL on the disks, beyond their time) included. A scene the build
- * refuses (a crack before stage 2) is skipped, and every stage runs this
- * test (later_stages).
+ * the grid run on them too: a thread owns a strip of node rows and adds
+ * the points that reach it in their order (strips.h), so every node sums
+ * what it sums on one thread in the same order. So no number may depend
+ * on the thread count: each scene is run on 1 to 4 threads with
+ * run.precision = "full" and its output compared byte for byte, a run that
+ * goes unstable (USL on the disks, beyond their time; CPDI's domain grown
+ * wider than a cell) included. A scene the build refuses (a crack before
+ * stage 2, run.shape "gimp" before stage 8) is skipped, and every stage
+ * runs this test (later_stages).
  */
 #include "testkit.h"
 
@@ -34,6 +38,8 @@ static const Case cases[] = {
     {"tests/1-mpm/scenes/disks.cfg", "run.update=usl run.time=5"},  /* unstable */
     {"figures/fig1/dcb_full.cfg", "run.time=20 run.snapshots=1"},
     {"figures/fig5/beam_impact_contact.cfg", "run.time=0.2 run.snapshots=1"},
+    {"tests/1-mpm/scenes/disks.cfg", "run.shape=gimp run.time=1"},  /* 3 x 3 */
+    {"tests/8-shapes/scenes/cpdi_stretch.cfg", ""},              /* unstable */
 };
 
 /** The run's output, its thread count (", N threads" ending the first
