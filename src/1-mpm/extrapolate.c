@@ -10,6 +10,7 @@
  * function: the same sums in the same order at every node.
  */
 #include "step.h"
+#include "strip_scatter.h"
 #include "transfer.h"
 
 void load_point_force(const Load *L, double t, double *fx, double *fy)
@@ -43,24 +44,6 @@ static void add_point_loads(Sim *sim)
 
 static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what);
 static void extrapolate_strips(Sim *sim, unsigned what);
-
-/// [owns]
-/** The nodes [lo, hi) that a thread owns (strips.h). */
-typedef struct Owned {
-    int lo;           /**< first node */
-    int hi;           /**< one past the last */
-} Owned;
-
-/** Does a pair that adds to slot @p s write a node of @p own? Always when
- *  @p own is NULL (one thread: a constant that the compiler folds). */
-static inline int owns(const Grid *g, const Owned *own, int s)
-{
-    if (!own)
-        return 1;
-    int node = grid_slot_node(g, s);
-    return node >= own->lo && node < own->hi;
-}
-/// [owns]
 
 /// [extrapolate]
 /** The momentum that one pair adds to slot @p s (eq. 26 and 31): the
@@ -117,8 +100,8 @@ void extrapolate(Sim *sim, unsigned what)
 {
     const Particles *P = &sim->pts;
     Grid *g = &sim->grid;
-    if (sim->strips.n > 0 && !sim->scene.run.transfer)  /* several threads */
-        extrapolate_strips(sim, what);  /* (strips.h; APIC's term: one) */
+    if (sim->strips.n > 0)              /* several threads (strips.h) */
+        extrapolate_strips(sim, what);
     else if (sim->scene.run.stencil)    /* another row of run.shape */
         extrapolate_wide(sim, sim->scene.run.stencil, what);
     else
@@ -134,7 +117,8 @@ void extrapolate(Sim *sim, unsigned what)
 
 /// [extrapolate_strips]
 /** Strip @p t's scatters: its points in increasing index, through the
- *  bilinear stencil (@p wide NULL, a constant after inlining) or @p wide;
+ *  bilinear stencil (@p wide NULL, a constant after inlining) or @p wide
+ *  and run.transfer's term after each point's, as extrapolate_wide();
  *  a point that reaches no other strip (most) needs no test of its pairs. */
 static inline __attribute__((always_inline)) void
 scatter_strip(Sim *sim, int t, unsigned what, StencilFn wide)
@@ -142,6 +126,8 @@ scatter_strip(Sim *sim, int t, unsigned what, StencilFn wide)
     const Particles *P = &sim->pts;
     const Strips *S = &sim->strips;
     Grid *g = &sim->grid;
+    const Transfer *tr = wide && (what & (EXTRAP_MASS | EXTRAP_MOMENTUM))
+                             ? sim->scene.run.transfer : NULL;
     Owned own = {S->first_node[t], S->first_node[t + 1]};
     for (int k = S->start[t]; k < S->start[t + 1]; k++) {
         Stencil st;
@@ -151,10 +137,13 @@ scatter_strip(Sim *sim, int t, unsigned what, StencilFn wide)
             n = st.n;
         } else
             stencil_linear(sim, p, &st);
-        if (S->row_strips[S->code[p]] & 1)  /* at the strip's edge */
+        int edge = S->row_strips[S->code[p]] & 1;   /* at the strip's edge */
+        if (edge)
             scatter_point(P, g, p, &st, n, what, &own);
         else
             scatter_point(P, g, p, &st, n, what, NULL);
+        if (tr)                         /* run.transfer (chapter 8) */
+            tr->scatter(sim, p, &st, g, edge ? &own : NULL);
     }
 }
 
@@ -186,6 +175,6 @@ static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what)
         wide(sim, p, &st);
         scatter_point(P, g, p, &st, st.n, what, NULL);
         if (tr && (what & (EXTRAP_MASS | EXTRAP_MOMENTUM)))
-            tr->scatter(sim, p, &st, g);    /* run.transfer (chapter 8) */
+            tr->scatter(sim, p, &st, g, NULL); /* run.transfer (chapter 8) */
     }
 }

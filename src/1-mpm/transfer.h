@@ -11,6 +11,7 @@
 struct Sim;
 struct Stencil;
 struct Grid;
+struct Owned;
 
 /// [transfer]
 /** A row of the table of run.transfer. Its functions run in the loops
@@ -19,9 +20,10 @@ struct Grid;
 typedef struct Transfer {
     const char *name;   /**< the value of run.transfer */
     /** Tasks 1 and 6: add point @p p's further momentum to the nodes of
-     *  its stencil @p st (masses and eq. 26's share are in already). */
+     *  its stencil @p st (masses and eq. 26's share are in already), to
+     *  those of @p own only (a thread's strip; NULL: all, strip_scatter.h). */
     void (*scatter)(const struct Sim *sim, int p, const struct Stencil *st,
-                    struct Grid *g);
+                    struct Grid *g, const struct Owned *own);
     /** Task 5, after eq. 30 moved point @p p: set what the point keeps. */
     void (*gather)(struct Sim *sim, int p, const struct Stencil *st);
 } Transfer;

@@ -13,6 +13,7 @@
 #include "crack_contact.h"
 #include "output.h"
 #include "step.h"
+#include "strip_scatter.h"
 
 int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
 {
@@ -88,15 +89,45 @@ static int reserve_slots(Sim *sim, ContactState *S)
 }
 
 /// [node_volumes]
+/** Point @p p's share of node_volumes(), to the nodes of @p own (NULL:
+ *  all). Inlined in the one-thread loop, where @p own is a constant NULL. */
+static inline __attribute__((always_inline)) void
+volume_point(Sim *sim, void *state, int p, const Owned *own)
+{
+    ContactState *S = state;
+    const FieldTable *F = &sim->fields;
+    const Particles *P = &sim->pts;
+    int node[STENCIL_NODES], near = 0;
+    stencil_nodes(sim, p, node);
+    for (int a = 0; a < STENCIL_NODES; a++)
+        near |= F->first[node[a]] >= 0;
+    if (!near)
+        return;
+    Stencil st;
+    stencil_of_point(sim, p, &st);
+    double v = (1.0 + P->exx[p]) * (1.0 + P->eyy[p]) * P->vol[p];
+    double mux = S->opening ? P->m[p] * (P->x[p] - S->x0[p]) : 0.0;
+    double muy = S->opening ? P->m[p] * (P->y[p] - S->y0[p]) : 0.0;
+    for (int a = 0; a < STENCIL_NODES; a++)
+        if (F->first[node[a]] >= 0 && owns(&sim->grid, own, node[a])) {
+            S->vnode[node[a]] += v * st.S[a];
+            if (S->opening) {
+                S->ux[st.slot[a]] += mux * st.S[a];
+                S->uy[st.slot[a]] += muy * st.S[a];
+            }
+        }
+}
+
 /** Eq. 8-9 at the nodes that carry extra fields this step (the only ones
  *  where contact is possible): V_i = sum_p V_p S_ip with the current point
  *  volume V_p = (1 + e_xx)(1 + e_yy) m_p / rho_p; and, for the opening
  *  rule, each field's sum_p m_p S_ip u_p of the points' displacements. A
- *  point none of whose nodes has extra fields costs four integer tests. */
+ *  point none of whose nodes has extra fields costs four integer tests.
+ *  On threads by strips, each node summing in point order as on one
+ *  (strip_scatter.h). */
 static int node_volumes(Sim *sim, ContactState *S)
 {
     const FieldTable *F = &sim->fields;
-    const Particles *P = &sim->pts;
     const Grid *g = &sim->grid;
     if (S->opening && reserve_slots(sim, S))
         return -1;
@@ -105,27 +136,11 @@ static int node_volumes(Sim *sim, ContactState *S)
         for (int s = F->touched[k]; s >= 0 && S->opening; s = field_next(F, g, s))
             S->ux[s] = S->uy[s] = 0.0;
     }
-    for (int p = 0; p < P->n; p++) {
-        int node[STENCIL_NODES], near = 0;
-        stencil_nodes(sim, p, node);
-        for (int a = 0; a < STENCIL_NODES; a++)
-            near |= F->first[node[a]] >= 0;
-        if (!near)
-            continue;
-        Stencil st;
-        stencil_of_point(sim, p, &st);
-        double v = (1.0 + P->exx[p]) * (1.0 + P->eyy[p]) * P->vol[p];
-        double mux = S->opening ? P->m[p] * (P->x[p] - S->x0[p]) : 0.0;
-        double muy = S->opening ? P->m[p] * (P->y[p] - S->y0[p]) : 0.0;
-        for (int a = 0; a < STENCIL_NODES; a++)
-            if (F->first[node[a]] >= 0) {
-                S->vnode[node[a]] += v * st.S[a];
-                if (S->opening) {
-                    S->ux[st.slot[a]] += mux * st.S[a];
-                    S->uy[st.slot[a]] += muy * st.S[a];
-                }
-            }
-    }
+    if (sim->strips.n > 0)
+        strip_scatter(sim, volume_point, S);
+    else
+        for (int p = 0; p < sim->pts.n; p++)
+            volume_point(sim, S, p, NULL);
     return 0;
 }
 /// [node_volumes]

@@ -15,6 +15,7 @@
 #include "material_contact.h"
 #include "output.h"
 #include "step.h"
+#include "strip_scatter.h"
 
 int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
 {
@@ -142,26 +143,37 @@ static int point_near(const Sim *sim, const MaterialContact *M, int p,
 }
 
 /// [mass_gradients]
+/** Point @p p's share of mass_gradients(), to the nodes of @p own (NULL:
+ *  all). Inlined in the one-thread loop, where @p own is a constant NULL. */
+static inline __attribute__((always_inline)) void
+gradient_point(Sim *sim, void *state, int p, const Owned *own)
+{
+    MaterialContact *M = state;
+    const FieldTable *F = &sim->fields;
+    int node[STENCIL_NODES];
+    Stencil st;
+    double half[2], area, mp = sim->pts.m[p];
+    if (!point_near(sim, M, p, node, &st, half, &area))
+        return;
+    for (int a = 0; a < STENCIL_NODES; a++)
+        if (F->first[node[a]] >= 0 && owns(&sim->grid, own, node[a])) {
+            M->gx[st.slot[a]] += mp * st.Gx[a];
+            M->gy[st.slot[a]] += mp * st.Gy[a];
+            M->va[st.slot[a]] += area * st.S[a];
+        }
+}
+
 /** Task 2, first pass: at the nodes with several fields, each field's mass
  *  gradient sum_p m_p grad S_ip and area sum_p A_p S_ip. A point in a cell
- *  none of whose corners has several fields costs one test. */
+ *  none of whose corners has several fields costs one test. On threads by
+ *  strips, each node summing in point order as on one (strip_scatter.h). */
 static void mass_gradients(Sim *sim, MaterialContact *M)
 {
-    const FieldTable *F = &sim->fields;
-    const Particles *P = &sim->pts;
-    for (int p = 0; p < P->n; p++) {
-        int node[STENCIL_NODES];
-        Stencil st;
-        double half[2], area, mp = P->m[p];
-        if (!point_near(sim, M, p, node, &st, half, &area))
-            continue;
-        for (int a = 0; a < STENCIL_NODES; a++)
-            if (F->first[node[a]] >= 0) {
-                M->gx[st.slot[a]] += mp * st.Gx[a];
-                M->gy[st.slot[a]] += mp * st.Gy[a];
-                M->va[st.slot[a]] += area * st.S[a];
-            }
-    }
+    if (sim->strips.n > 0)
+        strip_scatter(sim, gradient_point, M);
+    else
+        for (int p = 0; p < sim->pts.n; p++)
+            gradient_point(sim, M, p, NULL);
 }
 /// [mass_gradients]
 
@@ -196,33 +208,46 @@ static void candidate_axes(Sim *sim, MaterialContact *M, int n)
 }
 
 /// [interface_reach]
-/** Task 2, second pass: how far each field's points reach along each
- *  candidate direction c of the node: a point covers x_p . c -/+ r_p,
- *  r_p = |c_x| half_x + |c_y| half_y (its rectangle's half width). */
-static void interface_reach(Sim *sim, MaterialContact *M)
+/** Point @p p's share of interface_reach(), at the nodes of @p own (NULL:
+ *  all): a point covers x_p . c -/+ r_p along each candidate direction c
+ *  of a node, r_p = |c_x| half_x + |c_y| half_y (its rectangle's half
+ *  width). */
+static inline __attribute__((always_inline)) void
+reach_point(Sim *sim, void *state, int p, const Owned *own)
 {
+    MaterialContact *M = state;
     const FieldTable *F = &sim->fields;
     const Particles *P = &sim->pts;
-    for (int p = 0; p < P->n; p++) {
-        int node[STENCIL_NODES];
-        Stencil st;
-        double half[2], area;
-        if (!point_near(sim, M, p, node, &st, half, &area))
+    int node[STENCIL_NODES];
+    Stencil st;
+    double half[2], area;
+    if (!point_near(sim, M, p, node, &st, half, &area))
+        return;
+    for (int a = 0; a < STENCIL_NODES; a++) {
+        int n = node[a], s = st.slot[a];
+        if (F->first[n] < 0 || st.S[a] <= 0.0 || !owns(&sim->grid, own, n))
             continue;
-        for (int a = 0; a < STENCIL_NODES; a++) {
-            int n = node[a], s = st.slot[a];
-            if (F->first[n] < 0 || st.S[a] <= 0.0)
-                continue;
-            for (int k = 0; k < CONTACT_AXES; k++) {
-                double cx = M->cx[CONTACT_AXES * n + k], cy = M->cy[CONTACT_AXES * n + k];
-                double at = P->x[p] * cx + P->y[p] * cy;
-                double r = fabs(cx) * half[0] + fabs(cy) * half[1];
-                double *lo = &M->lo[CONTACT_AXES * s + k], *hi = &M->hi[CONTACT_AXES * s + k];
-                *lo = fmin(*lo, at - r);
-                *hi = fmax(*hi, at + r);
-            }
+        for (int k = 0; k < CONTACT_AXES; k++) {
+            double cx = M->cx[CONTACT_AXES * n + k], cy = M->cy[CONTACT_AXES * n + k];
+            double at = P->x[p] * cx + P->y[p] * cy;
+            double r = fabs(cx) * half[0] + fabs(cy) * half[1];
+            double *lo = &M->lo[CONTACT_AXES * s + k], *hi = &M->hi[CONTACT_AXES * s + k];
+            *lo = fmin(*lo, at - r);
+            *hi = fmax(*hi, at + r);
         }
     }
+}
+
+/** Task 2, second pass: how far each field's points reach along each
+ *  candidate direction of the node; on threads by strips, a thread writing
+ *  its own nodes only (strip_scatter.h). */
+static void interface_reach(Sim *sim, MaterialContact *M)
+{
+    if (sim->strips.n > 0)
+        strip_scatter(sim, reach_point, M);
+    else
+        for (int p = 0; p < sim->pts.n; p++)
+            reach_point(sim, M, p, NULL);
 }
 /// [interface_reach]
 

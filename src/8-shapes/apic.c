@@ -13,6 +13,7 @@
 #include "apic.h"
 
 #include "step.h"
+#include "strip_scatter.h"
 
 /** x_i - x_p along x and y for node @p node of a point at Task 0's
  *  position (cell @p cell, local @p xi, @p eta). */
@@ -56,7 +57,8 @@ static void inverse(const double D[3], double I[3])
 }
 
 /// [apic_scatter]
-void apic_scatter(const Sim *sim, int p, const Stencil *st, Grid *g)
+void apic_scatter(const Sim *sim, int p, const Stencil *st, Grid *g,
+                  const Owned *own)
 {
     const Particles *P = &sim->pts;
     const Apic *A = (const Apic *)sim->scene.run.transfer;
@@ -70,6 +72,8 @@ void apic_scatter(const Sim *sim, int p, const Stencil *st, Grid *g)
     for (int a = 0; a < st->n; a++) {
         int s = st->slot[a];
         double d[2];
+        if (!owns(g, own, s))
+            continue;                           /* another thread's node */
         offset(g, P->cell[p], P->xi[p], P->eta[p], grid_slot_node(g, s), d);
         g->px[s] += st->S[a] * (cxx * d[0] + cxy * d[1]);
         g->py[s] += st->S[a] * (cyx * d[0] + cyy * d[1]);

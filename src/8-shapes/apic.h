@@ -41,8 +41,10 @@ void apic_inertia(const Grid *g, const Particles *P, int p, const Stencil *st,
                   double D[3]);
 
 /** @brief Tasks 1 and 6 (Transfer::scatter): the nodes get
- *         m_p S_ip C_p (x_i - x_p) more, C_p = B_p D_p^+ . */
-void apic_scatter(const struct Sim *sim, int p, const Stencil *st, Grid *g);
+ *         m_p S_ip C_p (x_i - x_p) more, C_p = B_p D_p^+ ; those of
+ *         @p own only (a thread's strip; NULL: all, strip_scatter.h). */
+void apic_scatter(const struct Sim *sim, int p, const Stencil *st, Grid *g,
+                  const struct Owned *own);
 
 /** @brief Task 5 (Transfer::gather): v_p = sum_i S_ip v_i and
  *         B_p = sum_i S_ip v_i (x_i - x_p)^T, at Task 0's position. */
