@@ -2,8 +2,9 @@
  * @file scene_threads.c
  * @brief The MPM step on several threads (run.threads): the same bytes on
  *        1, 2, 3 and 4 threads, for every scheme, with and (on the stages
- *        that have them) without cracks and contact, with linear and
- *        (stage 8) wider stencils.
+ *        that have them) without cracks and contact (between bodies and
+ *        across a crack), with linear and (stage 8) wider stencils and
+ *        APIC's transfer.
  *
  * The point update (Task 5) and the stress update run on the threads: a
  * point writes only its own arrays, and an instability is recorded for
@@ -38,8 +39,14 @@ static const Case cases[] = {
     {"tests/1-mpm/scenes/disks.cfg", "run.update=usl run.time=5"},  /* unstable */
     {"figures/fig1/dcb_full.cfg", "run.time=20 run.snapshots=1"},
     {"figures/fig5/beam_impact_contact.cfg", "run.time=0.2 run.snapshots=1"},
+    /* contact between bodies: the disks meet at 1.0 and touch at 1.5 */
+    {"tests/4-contact/scenes/disks_contact.cfg", "run.time=1.5 run.snapshots=1"},
+    /* crack contact, the opening rule: the faces touch by 8 */
+    {"tests/4-contact/scenes/inclined_crack.cfg", "run.time=8 run.snapshots=1"},
     {"tests/1-mpm/scenes/disks.cfg", "run.shape=gimp run.time=1"},  /* 3 x 3 */
     {"tests/8-shapes/scenes/cpdi_stretch.cfg", ""},              /* unstable */
+    {"tests/1-mpm/scenes/spinning_disk.cfg",                      /* APIC */
+     "run.shape=gimp run.transfer=apic run.time=1 run.snapshots=1"},
 };
 
 /** The run's output, its thread count (", N threads" ending the first
