@@ -139,7 +139,7 @@ static int node_volumes(Sim *sim, ContactState *S)
     if (sim->strips.n > 0)
         strip_scatter(sim, volume_point, S);
     else
-        for (int p = 0; p < sim->pts.n; p++)
+        for (int p = 0, np = sim->pts.n; p < np; p++)
             volume_point(sim, S, p, NULL);
     return 0;
 }

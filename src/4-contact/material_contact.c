@@ -152,9 +152,10 @@ gradient_point(Sim *sim, void *state, int p, const Owned *own)
     const FieldTable *F = &sim->fields;
     int node[STENCIL_NODES];
     Stencil st;
-    double half[2], area, mp = sim->pts.m[p];
+    double half[2], area;
     if (!point_near(sim, M, p, node, &st, half, &area))
         return;
+    double mp = sim->pts.m[p];
     for (int a = 0; a < STENCIL_NODES; a++)
         if (F->first[node[a]] >= 0 && owns(&sim->grid, own, node[a])) {
             M->gx[st.slot[a]] += mp * st.Gx[a];
@@ -172,7 +173,7 @@ static void mass_gradients(Sim *sim, MaterialContact *M)
     if (sim->strips.n > 0)
         strip_scatter(sim, gradient_point, M);
     else
-        for (int p = 0; p < sim->pts.n; p++)
+        for (int p = 0, np = sim->pts.n; p < np; p++)
             gradient_point(sim, M, p, NULL);
 }
 /// [mass_gradients]
@@ -246,7 +247,7 @@ static void interface_reach(Sim *sim, MaterialContact *M)
     if (sim->strips.n > 0)
         strip_scatter(sim, reach_point, M);
     else
-        for (int p = 0; p < sim->pts.n; p++)
+        for (int p = 0, np = sim->pts.n; p < np; p++)
             reach_point(sim, M, p, NULL);
 }
 /// [interface_reach]

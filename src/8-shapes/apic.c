@@ -57,6 +57,27 @@ static void inverse(const double D[3], double I[3])
 }
 
 /// [apic_scatter]
+/** The nodes of @p own (NULL: all) get m_p S_ip C_p (x_i - x_p), with
+ *  @p mc = m_p C_p (xx, xy, yx, yy). Inlined twice, so that the one-thread
+ *  loop makes no test. */
+static inline __attribute__((always_inline)) void
+add_affine(const Particles *P, int p, const Stencil *st, Grid *g,
+           const double mc[4], const Owned *own)
+{
+    int cell = P->cell[p];
+    double xi = P->xi[p], eta = P->eta[p];
+    double cxx = mc[0], cxy = mc[1], cyx = mc[2], cyy = mc[3];
+    for (int a = 0; a < st->n; a++) {
+        int s = st->slot[a];
+        double d[2];
+        if (!owns(g, own, s))
+            continue;                           /* another thread's node */
+        offset(g, cell, xi, eta, grid_slot_node(g, s), d);
+        g->px[s] += st->S[a] * (cxx * d[0] + cxy * d[1]);
+        g->py[s] += st->S[a] * (cyx * d[0] + cyy * d[1]);
+    }
+}
+
 void apic_scatter(const Sim *sim, int p, const Stencil *st, Grid *g,
                   const Owned *own)
 {
@@ -67,17 +88,12 @@ void apic_scatter(const Sim *sim, int p, const Stencil *st, Grid *g,
     apic_inertia(g, P, p, st, D);
     inverse(D, I);
     double m = P->m[p];                         /* m_p C_p = m_p B_p D_p^-1 */
-    double cxx = m * (B[0] * I[0] + B[1] * I[1]), cxy = m * (B[0] * I[1] + B[1] * I[2]);
-    double cyx = m * (B[2] * I[0] + B[3] * I[1]), cyy = m * (B[2] * I[1] + B[3] * I[2]);
-    for (int a = 0; a < st->n; a++) {
-        int s = st->slot[a];
-        double d[2];
-        if (!owns(g, own, s))
-            continue;                           /* another thread's node */
-        offset(g, P->cell[p], P->xi[p], P->eta[p], grid_slot_node(g, s), d);
-        g->px[s] += st->S[a] * (cxx * d[0] + cxy * d[1]);
-        g->py[s] += st->S[a] * (cyx * d[0] + cyy * d[1]);
-    }
+    double mc[4] = {m * (B[0] * I[0] + B[1] * I[1]), m * (B[0] * I[1] + B[1] * I[2]),
+                    m * (B[2] * I[0] + B[3] * I[1]), m * (B[2] * I[1] + B[3] * I[2])};
+    if (own)                                    /* a thread's strip */
+        add_affine(P, p, st, g, mc, own);
+    else
+        add_affine(P, p, st, g, mc, NULL);
 }
 /// [apic_scatter]
 
