@@ -41,11 +41,16 @@ static void progress_line(const Sim *sim, double start, double *last)
 
 /** The step whose time is nearest snapshot @p k's asked time, k T / K for
  *  K snapshots over the run's time T (a whole step at least, at most the
- *  last). */
-static long snapshot_step(const Sim *sim, int k)
+ *  last). @p dt0 is the step the run started with: once the step has
+ *  been shortened (an XEFG crack grew, chapter 6b), the step is counted
+ *  from now at the new step. */
+static long snapshot_step(const Sim *sim, int k, double dt0)
 {
     const RunSettings *run = &sim->scene.run;
-    long n = lround(k * run->time / (run->snapshots * sim->dt));
+    long n = sim->dt == dt0
+                 ? lround(k * run->time / (run->snapshots * sim->dt))
+                 : sim->step + lround((k * run->time / run->snapshots - sim->t) /
+                                      sim->dt);
     return n < 1 ? 1 : n > sim->nsteps ? sim->nsteps : n;
 }
 
@@ -130,15 +135,19 @@ static int history_close(History *h)
 }
 
 /** Snapshot number rp->nsnap now, and the step of the next one. */
-static int snapshot_now(Sim *sim, RunProgress *rp, const char *dir)
+static int snapshot_now(Sim *sim, RunProgress *rp, const char *dir,
+                        double dt0)
 {
     const RunSettings *run = &sim->scene.run;
+    int asked = rp->asked;
     rp->times[rp->nsnap] = sim->t;
     if (output_snapshot(sim, dir, rp->nsnap++, rp->times))
         return -1;
-    while (rp->asked <= run->snapshots && snapshot_step(sim, rp->asked) <= sim->step)
+    while (rp->asked <= run->snapshots && snapshot_step(sim, rp->asked, dt0) <= sim->step)
         rp->asked++;                               /* two asked times, one step */
-    rp->snap_at = rp->asked <= run->snapshots ? snapshot_step(sim, rp->asked) : -1;
+    if (sim->step > 0 && rp->asked == asked)       /* one snapshot an asked time */
+        rp->asked++;
+    rp->snap_at = rp->asked <= run->snapshots ? snapshot_step(sim, rp->asked, dt0) : -1;
     return 0;
 }
 
@@ -169,8 +178,8 @@ static int run_start(Sim *sim, RunProgress *rp, History *h, const char *dir,
     if (hr)
         return hr == -3 ? 3 : 2;
     rp->asked = 1;
-    rp->snap_at = sim->scene.run.snapshots > 0 ? snapshot_step(sim, 1) : -1;
-    if (sim->scene.run.snapshots > 0 && snapshot_now(sim, rp, dir))
+    rp->snap_at = sim->scene.run.snapshots > 0 ? snapshot_step(sim, 1, sim->dt) : -1;
+    if (sim->scene.run.snapshots > 0 && snapshot_now(sim, rp, dir, sim->dt))
         return 2;
     return 0;
 }
@@ -239,6 +248,7 @@ int sim_run(Sim *sim, const char *outdir, const RunOptions *opt)
     int progress = opt->progress && isatty(STDERR_FILENO), signo = 0;
     double start = wall_seconds(), last = 0;
     long first = sim->step;
+    double dt0 = sim->dt, dt_seen = sim->dt;      /* the step, as it started */
     while (rc == 0 && sim->step < sim->nsteps) {
         int hrc = 0;
         if (sim_advance(sim) ||
@@ -250,7 +260,12 @@ int sim_run(Sim *sim, const char *outdir, const RunOptions *opt)
         }
         if (hrc)
             rc = 2;
-        if (rc == 0 && sim->step == rp.snap_at && snapshot_now(sim, &rp, outdir))
+        if (sim->dt != dt_seen && rp.snap_at >= 0) {   /* shortened: again */
+            dt_seen = sim->dt;
+            rp.snap_at = snapshot_step(sim, rp.asked, dt0);
+        }
+        if (rc == 0 && rp.snap_at >= 0 && sim->step >= rp.snap_at &&
+            snapshot_now(sim, &rp, outdir, dt0))
             rc = 2;                                /* the step nearest k T / K */
         if (rc == 0 && run->checkpoint_every > 0 && sim->step < sim->nsteps &&
             sim->step % run->checkpoint_every == 0 && save_checkpoint(sim, &rp, &h, outdir))

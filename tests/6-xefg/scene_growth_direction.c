@@ -213,6 +213,36 @@ static void failed_integral_stops_the_run(void **state)
     tk_free(s);
 }
 
+/** The step shortens as the crack grows (chapter 6b): the snapshots asked
+ *  for are still written once each, the last at the run's end. Before
+ *  the run loop counted them in steps of the new length from the start,
+ *  this scene wrote 328 of 401 (and the figure's finer DCB wrote past the
+ *  end of the snapshot list). */
+static void snapshots_follow_a_shortened_step(void **state)
+{
+    (void)state;
+    static char out[4096];
+    const char *dir = "build/test-out/xefg-snapshots";
+    char args[512];
+    snprintf(args, sizeof args, "tests/6-xefg/scenes/dcb_hoop.cfg -q -o %s "
+             "run.snapshots=400", dir);
+    assert_int_equal(tk_run_mpm(args, out, sizeof out), 0);
+    char path[256];
+    snprintf(path, sizeof path, "%s/particles.pvd", dir);
+    char *pvd = tk_slurp(path, NULL);
+    int n = 0;
+    double last = -1.0;
+    for (const char *at = pvd; (at = strstr(at, "timestep=\"")) != NULL; n++) {
+        at += strlen("timestep=\"");
+        last = strtod(at, NULL);
+    }
+    free(pvd);
+    printf("  400 snapshots asked: %d written (with t = 0), the last at t = "
+           "%.5f ms of 170\n", n, last);
+    assert_int_equal(n, 401);
+    assert_true(fabs(last - 170.0) < 0.1);      /* the last step's time */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -220,6 +250,7 @@ int main(void)
         cmocka_unit_test(kalthoff_first_kink),
         cmocka_unit_test(inclined_kink_by_hoop_stress),
         cmocka_unit_test(failed_integral_stops_the_run),
+        cmocka_unit_test(snapshots_follow_a_shortened_step),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
