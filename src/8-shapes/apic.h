@@ -13,6 +13,7 @@
 
 #include "sim.h"
 #include "stencil.h"
+#include "strip_scatter.h"
 #include "transfer.h"
 
 /** The name under which the APIC state is attached (sim_state()). */
@@ -43,8 +44,8 @@ void apic_inertia(const Grid *g, const Particles *P, int p, const Stencil *st,
 /** @brief Tasks 1 and 6 (Transfer::scatter): the nodes get
  *         m_p S_ip C_p (x_i - x_p) more, C_p = B_p D_p^+ ; those of
  *         @p own only (a thread's strip; NULL: all, strip_scatter.h). */
-void apic_scatter(const struct Sim *sim, int p, const Stencil *st, Grid *g,
-                  const struct Owned *own);
+void apic_scatter(const Sim *sim, int p, const Stencil *st, Grid *g,
+                  const Owned *own);
 
 /** @brief Task 5 (Transfer::gather): v_p = sum_i S_ip v_i and
  *         B_p = sum_i S_ip v_i (x_i - x_p)^T, at Task 0's position. */
