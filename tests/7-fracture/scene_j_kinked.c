@@ -52,6 +52,7 @@
 
 #include "j_integral.h"
 #include "testkit.h"
+#include "westergaard.h"
 
 #define PI 3.14159265358979323846
 #define CRACK 2.0                 /* a: half the straight crack (mm) */
@@ -73,12 +74,8 @@
  *  s_xy = -y Re Z', Z = sigma z / sqrt(z^2 - a^2); Anderson ch. 2). */
 static void griffith_biaxial(double x, double y, double s[3])
 {
-    double a = CRACK;
-    double complex z = x + I * y, w = csqrt(z - a) * csqrt(z + a);
-    double complex Z = SIGMA * z / w, Zp = -SIGMA * a * a / (w * w * w);
-    s[0] = creal(Z) - y * cimag(Zp);
-    s[1] = creal(Z) + y * cimag(Zp);
-    s[2] = -y * creal(Zp);
+    griffith_stress(SIGMA, 0.0, CRACK, x, y, s);    /* sigma along y */
+    s[0] += SIGMA;                                  /* and along x */
 }
 
 /** Cotterell and Rice's first-order k_I, k_II of the kink (length l at
@@ -102,31 +99,6 @@ static void cotterell_rice(double al, double l, double k[2])
     }
     k[0] *= sqrt(2.0 / PI);
     k[1] *= sqrt(2.0 / PI);
-}
-
-/** A growing text (the scene: one load per edge point). */
-typedef struct Text {
-    char *s;
-    size_t len, cap;
-} Text;
-
-static void text_add(Text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void text_add(Text *t, const char *fmt, ...)
-{
-    for (;;) {
-        va_list ap;
-        va_start(ap, fmt);
-        int n = vsnprintf(t->s + t->len, t->cap - t->len, fmt, ap);
-        va_end(ap);
-        assert_true(n >= 0);
-        if ((size_t)n < t->cap - t->len) {
-            t->len += (size_t)n;
-            return;
-        }
-        t->cap = 2 * (t->cap + (size_t)n);
-        t->s = realloc(t->s, t->cap);
-        assert_non_null(t->s);
-    }
 }
 
 /** One run at rest: per tip (0: straight, 1: kinked) and domain. */

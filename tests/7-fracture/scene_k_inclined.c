@@ -13,12 +13,13 @@
  * h = a / 16 with 2 x 2 points each. The remote tension sigma = 1 MPa is
  * normal to the x axis. As in stage 6's scene_centre_crack.c, the plate's
  * edges carry the tractions of the infinite plate's exact state
- * (Westergaard's functions, griffith_stress() below), one load per point
- * of the outermost row (traction x h/2), so the finite plate holds
- * Griffith's state and no finite-width correction is needed (pulled
- * uniformly, this plate would need more than Feddersen's
- * sqrt(sec(pi a / 2b)), +7 % at beta = 0, which is for a long strip; Tada's
- * handbook). Damped to rest as scene_k_edge.c is.
+ * (Westergaard's functions, griffith_stress() of
+ * tests/support/westergaard.h), one load per point of the outermost row
+ * (traction x h/2), so the finite plate holds Griffith's state and no
+ * finite-width correction is needed (pulled uniformly, this plate would
+ * need more than Feddersen's sqrt(sec(pi a / 2b)), +7 % at beta = 0,
+ * which is for a long strip; Tada's handbook). Damped to rest as
+ * scene_k_edge.c is.
  *
  * The crack's centre is a cell centre, so that grid, points and loads are
  * point-symmetric about it and the two tips see the same discretisation
@@ -53,6 +54,7 @@
 
 #include "j_integral.h"
 #include "testkit.h"
+#include "westergaard.h"
 
 #define PI 3.14159265358979323846
 #define CRACK 2.0                 /* a: half the crack's length (mm) */
@@ -68,59 +70,6 @@
 #define TOL 0.03                  /* K against Griffith */
 #define SYM_EXACT 1e-6            /* tips, 30 and 60 deg (of sigma sqrt(pi a)) */
 #define SYM_45 0.01               /* tips, 45 deg */
-
-/**
- * The stress (xx, yy, xy) at (X, Y), measured from the crack's centre, of
- * an infinite plate under the tension @p sigma along y with the crack
- * |x'| <= a, y' = 0 of the frame turned by @p beta. There the remote state
- * is S = sigma cos^2 beta normal to the crack, T = sigma sin beta cos beta
- * shear and P = sigma sin^2 beta along it; with Westergaard's
- * Z = z / sqrt(z^2 - a^2), Z' = -a^2 / (z^2 - a^2)^(3/2) (Anderson ch. 2):
- *   mode I (x S):  s_xx = Re Z - y Im Z', s_yy = Re Z + y Im Z', s_xy = -y Re Z'
- *   mode II (x T): s_xx = 2 Im Z + y Re Z', s_yy = -y Re Z', s_xy = Re Z - y Im Z'
- * and P - S added to s_xx (mode I's function pulls by S along the crack
- * too). sqrt(z - a) sqrt(z + a) puts the branch cut on the crack.
- */
-static void griffith_stress(double beta, double X, double Y, double s[3])
-{
-    double c = cos(beta), n = sin(beta), a = CRACK;
-    double x = c * X + n * Y, y = -n * X + c * Y;
-    double complex z = x + I * y, w = csqrt(z - a) * csqrt(z + a);
-    double complex Z = z / w, Zp = -a * a / (w * w * w);
-    double S = SIGMA * c * c, T = SIGMA * n * c, P = SIGMA * n * n;
-    double sxx = S * (creal(Z) - y * cimag(Zp)) + T * (2.0 * cimag(Z) + y * creal(Zp)) + P - S;
-    double syy = S * (creal(Z) + y * cimag(Zp)) - T * y * creal(Zp);
-    double sxy = -S * y * creal(Zp) + T * (creal(Z) - y * cimag(Zp));
-    /* to the plate's axes: R s R^T, R = [[c, -n], [n, c]] */
-    s[0] = c * c * sxx - 2.0 * c * n * sxy + n * n * syy;
-    s[1] = n * n * sxx + 2.0 * c * n * sxy + c * c * syy;
-    s[2] = c * n * (sxx - syy) + (c * c - n * n) * sxy;
-}
-
-/** A growing text (the scene: one load per edge point). */
-typedef struct Text {
-    char *s;
-    size_t len, cap;
-} Text;
-
-static void text_add(Text *t, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void text_add(Text *t, const char *fmt, ...)
-{
-    for (;;) {
-        va_list ap;
-        va_start(ap, fmt);
-        int n = vsnprintf(t->s + t->len, t->cap - t->len, fmt, ap);
-        va_end(ap);
-        assert_true(n >= 0);
-        if ((size_t)n < t->cap - t->len) {
-            t->len += (size_t)n;
-            return;
-        }
-        t->cap = 2 * (t->cap + (size_t)n);
-        t->s = realloc(t->s, t->cap);
-        assert_non_null(t->s);
-    }
-}
 
 /** One run: K / (sigma sqrt(pi a)) per tip (0: first point) and domain. */
 typedef struct Result {
@@ -180,13 +129,13 @@ static Result inclined_crack(double beta, int n)
             double f[2] = {0.0, 0.0}, s[3];
             if (tb) {                   /* t = s . (0, +-1) */
                 double ny = j == 0 ? -1.0 : 1.0;
-                griffith_stress(beta, px - cx, ny * b - cy, s);
+                griffith_stress(SIGMA, beta, CRACK, px - cx, ny * b - cy, s);
                 f[0] += s[2] * ny * hp;
                 f[1] += s[1] * ny * hp;
             }
             if (lr) {                   /* t = s . (+-1, 0) */
                 double nx = i == 0 ? -1.0 : 1.0;
-                griffith_stress(beta, nx * b - cx, py - cy, s);
+                griffith_stress(SIGMA, beta, CRACK, nx * b - cx, py - cy, s);
                 f[0] += s[0] * nx * hp;
                 f[1] += s[2] * nx * hp;
             }
@@ -244,17 +193,17 @@ static void westergaard_field_is_griffiths(void **state)
     for (int k = -9; k <= 9; k++)
         for (int side = -1; side <= 1; side += 2) {
             double xl = 0.1 * k * CRACK, yl = side * 1e-12;
-            griffith_stress(beta, c * xl - n * yl, n * xl + c * yl, s);
+            griffith_stress(SIGMA, beta, CRACK, c * xl - n * yl, n * xl + c * yl, s);
             assert_close(-n * s[0] + c * s[2], 0.0, 1e-9);   /* normal (-n, c) */
             assert_close(-n * s[2] + c * s[1], 0.0, 1e-9);
         }
-    griffith_stress(beta, 3e6, -4e6, s);
+    griffith_stress(SIGMA, beta, CRACK, 3e6, -4e6, s);
     assert_close(s[0], 0.0, 1e-9);
     assert_close(s[1], SIGMA, 1e-9);
     assert_close(s[2], 0.0, 1e-9);
     double r = 1e-8 * CRACK, K0 = SIGMA * sqrt(PI * CRACK);
     for (int e = -1; e <= 1; e += 2) {          /* ahead of either tip */
-        griffith_stress(beta, e * (CRACK + r) * c, e * (CRACK + r) * n, s);
+        griffith_stress(SIGMA, beta, CRACK, e * (CRACK + r) * c, e * (CRACK + r) * n, s);
         double snn = n * n * s[0] - 2.0 * c * n * s[2] + c * c * s[1];
         double stn = c * n * (s[1] - s[0]) + (c * c - n * n) * s[2];
         assert_close(sqrt(2.0 * PI * r) * snn / K0, c * c, 1e-6);
