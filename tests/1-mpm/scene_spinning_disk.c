@@ -22,41 +22,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "spin.h"
 #include "testkit.h"
-
-#define RHO 1.0e-3
-#define W 1.048         /* rad/ms */
-#define RADIUS 10.0
-
-typedef struct Spin {
-    double ke, lz;      /* kinetic energy, angular momentum about (0, 0) */
-    double vm_median, vm_max;  /* von Mises / (rho v^2) */
-} Spin;
-
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static Spin measure(const Sim *sim)
-{
-    const Particles *P = &sim->pts;
-    Spin s = {0, 0, 0, 0};
-    double *vm = malloc(sizeof(double) * (size_t)P->n), v = W * RADIUS;
-    assert_non_null(vm);
-    for (int p = 0; p < P->n; p++) {
-        s.ke += 0.5 * P->m[p] * (P->vx[p] * P->vx[p] + P->vy[p] * P->vy[p]);
-        s.lz += P->m[p] * (P->x[p] * P->vy[p] - P->y[p] * P->vx[p]);
-        double a = P->sxx[p], b = P->syy[p], c = P->sxy[p];
-        vm[p] = sqrt(a * a - a * b + b * b + 3.0 * c * c) / (RHO * v * v);
-    }
-    qsort(vm, (size_t)P->n, sizeof(double), by_value);
-    s.vm_median = vm[P->n / 2];
-    s.vm_max = vm[P->n - 1];
-    free(vm);
-    return s;
-}
 
 static void one_revolution(void **state)
 {
@@ -69,9 +36,9 @@ static void one_revolution(void **state)
         const char *const over[] = {rate, "grid.cell_size=[0.5, 0.5]",
                                     "grid.cells=[64, 64]", NULL};
         Sim *sim = tk_load_file("tests/1-mpm/scenes/spinning_disk.cfg", over);
-        Spin start = measure(sim);
+        Spin start = spin_measure(sim);
         tk_steps(sim, sim->nsteps);
-        end[k] = measure(sim);
+        end[k] = spin_measure(sim);
         printf("  %-9s %d points, %ld steps to t = %.4f ms (one turn 2 pi / w = "
                "%.4f): kinetic energy %.5f of its start, angular momentum %.5f; "
                "von Mises / rho v^2: median %.2f, largest %.2f\n", rates[k],

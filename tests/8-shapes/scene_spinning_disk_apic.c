@@ -39,41 +39,15 @@
 #include <string.h>
 
 #include "apic.h"
+#include "spin.h"
 #include "testkit.h"
 
-#define RHO 1.0e-3
-#define W 1.048         /* rad/ms */
-#define RADIUS 10.0
-
-typedef struct Spin {
-    double ke, lz;             /* kinetic energy; angular momentum (APIC's) */
-    double vm_median, vm_max;  /* von Mises / (rho v^2) */
-} Spin;
-
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
+/** spin_measure(), with APIC's angular momentum (its B_p carries part). */
 static Spin measure(const Sim *sim)
 {
-    const Particles *P = &sim->pts;
-    Spin s = {0, 0, 0, 0};
-    double *vm = malloc(sizeof(double) * (size_t)P->n), v = W * RADIUS;
-    assert_non_null(vm);
-    for (int p = 0; p < P->n; p++) {
-        s.ke += 0.5 * P->m[p] * (P->vx[p] * P->vx[p] + P->vy[p] * P->vy[p]);
-        s.lz += P->m[p] * (P->x[p] * P->vy[p] - P->y[p] * P->vx[p]);
-        double a = P->sxx[p], b = P->syy[p], c = P->sxy[p];
-        vm[p] = sqrt(a * a - a * b + b * b + 3.0 * c * c) / (RHO * v * v);
-    }
+    Spin s = spin_measure(sim);
     if (sim->scene.run.transfer)
         s.lz = apic_angular_momentum(sim);
-    qsort(vm, (size_t)P->n, sizeof(double), by_value);
-    s.vm_median = vm[P->n / 2];
-    s.vm_max = vm[P->n - 1];
-    free(vm);
     return s;
 }
 

@@ -38,41 +38,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "spin.h"
 #include "testkit.h"
-
-#define RHO 1.0e-3
-#define W 1.048         /* rad/ms */
-#define RADIUS 10.0
-
-typedef struct Spin {
-    double ke, lz;      /* kinetic energy, angular momentum about (0, 0) */
-    double vm_median, vm_max;  /* von Mises / (rho v^2) */
-} Spin;
-
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static Spin measure(const Sim *sim)
-{
-    const Particles *P = &sim->pts;
-    Spin s = {0, 0, 0, 0};
-    double *vm = malloc(sizeof(double) * (size_t)P->n), v = W * RADIUS;
-    assert_non_null(vm);
-    for (int p = 0; p < P->n; p++) {
-        s.ke += 0.5 * P->m[p] * (P->vx[p] * P->vx[p] + P->vy[p] * P->vy[p]);
-        s.lz += P->m[p] * (P->x[p] * P->vy[p] - P->y[p] * P->vx[p]);
-        double a = P->sxx[p], b = P->syy[p], c = P->sxy[p];
-        vm[p] = sqrt(a * a - a * b + b * b + 3.0 * c * c) / (RHO * v * v);
-    }
-    qsort(vm, (size_t)P->n, sizeof(double), by_value);
-    s.vm_median = vm[P->n / 2];
-    s.vm_max = vm[P->n - 1];
-    free(vm);
-    return s;
-}
 
 /** One revolution with run.shape = @p shape; the ratios to the start. */
 static Spin one_turn(const char *shape, const char *cells, const char *size,
@@ -82,9 +49,9 @@ static Spin one_turn(const char *shape, const char *cells, const char *size,
     snprintf(opt, sizeof opt, "run.shape=%s", shape);
     const char *const over[] = {opt, cells, size, NULL};
     Sim *sim = tk_load_file("tests/1-mpm/scenes/spinning_disk.cfg", over);
-    Spin start = measure(sim);
+    Spin start = spin_measure(sim);
     tk_steps(sim, sim->nsteps);
-    Spin end = measure(sim);
+    Spin end = spin_measure(sim);
     ratio->ke = end.ke / start.ke;
     ratio->lz = end.lz / start.lz;
     printf("  %-6s %d points, %ld steps to t = %.4f ms: kinetic energy %.5f of "
@@ -103,13 +70,13 @@ static int usl_completes(const char *shape, const char *cells, const char *size,
     snprintf(opt, sizeof opt, "run.shape=%s", shape);
     const char *const over[] = {opt, "run.update=usl", cells, size, NULL};
     Sim *sim = tk_load_file("tests/1-mpm/scenes/spinning_disk.cfg", over);
-    Spin start = measure(sim);
+    Spin start = spin_measure(sim);
     long k = 0;
     int rc = 0;
     while (k < sim->nsteps && (rc = sim_advance(sim)) == 0)
         k++;
     if (rc == 0) {
-        *end = measure(sim);
+        *end = spin_measure(sim);
         ratio->ke = end->ke / start.ke;
         ratio->lz = end->lz / start.lz;
         printf("  %-6s usl:  %ld steps: kinetic energy %.5f, angular momentum "
