@@ -12,16 +12,19 @@
 
 #include "testkit.h"
 
-#define RHO 1.0e-3      /* g/mm^3 */
-#define W 1.048         /* rad/ms */
-#define RADIUS 10.0     /* mm */
+#define RHO 1.0e-3      /**< the disk's density (g/mm^3) */
+#define W 1.048         /**< its spin (rad/ms) */
+#define RADIUS 10.0     /**< its radius (mm) */
 
 /** What a disk's points hold. */
 typedef struct Spin {
-    double ke, lz;             /* kinetic energy, angular momentum about (0, 0) */
-    double vm_median, vm_max;  /* von Mises / (rho v^2), v = W RADIUS */
+    double ke;         /**< kinetic energy */
+    double lz;         /**< angular momentum about (0, 0) */
+    double vm_median;  /**< median von Mises stress / (rho v^2), v = W RADIUS */
+    double vm_max;     /**< largest von Mises stress / (rho v^2) */
 } Spin;
 
+/** qsort() order of doubles. */
 static inline int spin_by_value(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;

@@ -51,8 +51,9 @@ static inline void griffith_stress(double sigma, double beta, double a,
 
 /** A growing text. */
 typedef struct Text {
-    char *s;
-    size_t len, cap;
+    char *s;        /**< the text, NUL-terminated */
+    size_t len;     /**< its length */
+    size_t cap;     /**< room in s */
 } Text;
 
 /** Append to @p t as printf does. */
