@@ -23,8 +23,8 @@ int strips_init(Sim *sim)
     const Grid *g = &sim->grid;
     int T = sim->threads, np = sim->pts.n;
     strips_free(S);
-    if (T < 2)
-        return 0;
+    if (T < 2 || sim->scene.run.method->step != sim_step)
+        return 0;                   /* one thread, or a method of its own */
     /* a stencil of 3 x 3 nodes comes from a domain at most a cell wide
        (shapes_check.c, cpdi_update.c): node rows j - 1 .. j + 2 */
     S->reach = sim->scene.run.stencil ? 1 : 0;
