@@ -219,22 +219,15 @@ if [ -x "$S2" ]; then
             "$(awk -v a="$a" -v b="$b" 'BEGIN { print b / a }')"
     fi
 
-    # instructions do not depend on the neighbours: count them (callgrind)
-    # for 10 and 30 steps and take the difference, per particle-step
+    # instructions do not depend on the neighbours: count them (callgrind,
+    # tools/task1_cost.sh: 30 minus 10 steps of the time loop, per particle-step)
     if command -v valgrind >/dev/null 2>&1; then
         echo "instructions per particle-step (valgrind callgrind, 30 minus 10 steps; deterministic):"
         declare -A I
         for run in "stage1 dcb_nocrack" "stage2 dcb_nocrack" "stage2 dcb_crack"; do
             read -r st scene <<<"$run"
-            for n in 10 30; do
-                time=$(awk -v n="$n" -v dt="$dt" 'BEGIN { printf "%.17g", (n - 0.5) * dt }')
-                valgrind --tool=callgrind --callgrind-out-file="$WORK/cg.out" \
-                    build/$st/mpm "tools/bench/$scene.cfg" -q -o "$WORK/cg" \
-                    run.time="$time" >/dev/null 2>"$WORK/cg.err"
-                I[$run.$n]=$(sed -nE 's/.*refs: *([0-9,]+).*/\1/p' "$WORK/cg.err" | tr -d ,)
-            done
-            I[$run]=$(awk -v a="${I[$run.10]}" -v b="${I[$run.30]}" -v n="$npts" \
-                      'BEGIN { printf "%.0f", (b - a) / (20 * n) }')
+            read -r _ whole _ < <(bash tools/task1_cost.sh "build/$st/mpm" "tools/bench/$scene.cfg")
+            I[$run]=${whole:-failed}
             printf '  %-24s %6s instructions\n' "$run" "${I[$run]}"
         done
         printf '  crack overhead in instructions: %.2f\n' \
@@ -242,7 +235,7 @@ if [ -x "$S2" ]; then
         printf '  no crack, stage 2 / stage 1: %.3f (a scene without cracks costs what stage 1 costs)\n' \
             "$(awk -v a="${I[stage1 dcb_nocrack]}" -v b="${I[stage2 dcb_nocrack]}" 'BEGIN { print b / a }')"
         # the seams (hook lists, field table, stencil, law table) may not
-        # cost an instruction: 1031 was the count before they were cut
+        # cost an instruction
         printf '  no crack, stage 1: %s instructions per particle-step, limit %s: %s\n' \
             "${I[stage1 dcb_nocrack]}" "$LIMIT_INSTR" \
             "$(awk -v a="${I[stage1 dcb_nocrack]}" -v l="$LIMIT_INSTR" 'BEGIN { print (a <= l ? "within" : "OVER") }')"
