@@ -39,7 +39,8 @@
  * grids N = 32, 64, 128; the bounds are those above, unchanged.
  * MPM_BAR_CELLS="8 16 32 64 128 256 512" runs that list (make fig-shapes)
  * and prints one "bar" row per run for it; a run that stops is printed
- * and counts as an infinite error.
+ * and counts as an infinite error. MPM_BAR_CFL sets run.cfl (0.2: the
+ * scene's), MPM_BAR_V0 v0 (mm/ms; 1e-6).
  */
 #include <math.h>
 #include <stdio.h>
@@ -51,7 +52,7 @@
 #define BAR_L 16.0      /**< the bar's length (mm) */
 #define BAR_C 1.0       /**< its wave speed sqrt(E / rho) (mm/ms) */
 #define BAR_V 0.2       /**< its flight (mm/ms), the scene's velocity */
-#define BAR_V0 1.0e-6   /**< the mode's velocity amplitude (mm/ms): a strain of 1e-6 */
+#define BAR_V0 1.0e-6   /**< the mode's velocity amplitude v0 (mm/ms): a strain of 1e-6 */
 #define MAX_GRIDS 8     /**< the most cell sizes a run takes */
 #define BAR_PI 3.14159265358979323846  /**< pi (M_PI is not C11) */
 
@@ -75,15 +76,22 @@ static BarError bar_run(const char *shape, int cells, double v)
     snprintf(gs, sizeof gs, "grid.cell_size=[%.16e, 1.0]", h);
     snprintf(go, sizeof go, "grid.origin=[%.16e, -1.0]", -2.0 * h);
     snprintf(bv, sizeof bv, "bodies.[0].velocity=[%.16e, 0.0]", v);
-    const char *const over[] = {s, gc, gs, go, bv, NULL};
+    const char *cfl = getenv("MPM_BAR_CFL");
+    char cf[64] = "";
+    if (cfl && *cfl)
+        snprintf(cf, sizeof cf, "run.cfl=%s", cfl);
+    const char *const over[] = {s, gc, gs, go, bv, cf[0] ? cf : NULL, NULL};
     Sim *sim = tk_load_file("tests/8-shapes/scenes/bar_crossing.cfg", over);
     Particles *P = &sim->pts;
     double *X = malloc(sizeof(double) * (size_t)P->n);
     assert_non_null(X);
-    const double w = BAR_PI * BAR_C / BAR_L, A = BAR_V0 / w;
+    const char *v0s = getenv("MPM_BAR_V0");
+    const double v0 = v0s && *v0s ? atof(v0s) : BAR_V0;
+    assert_true(v0 > 0.0);
+    const double w = BAR_PI * BAR_C / BAR_L, A = v0 / w;
     for (int p = 0; p < P->n; p++) {
         X[p] = P->x[p];
-        P->vx[p] = v + BAR_V0 * cos(BAR_PI * X[p] / BAR_L);
+        P->vx[p] = v + v0 * cos(BAR_PI * X[p] / BAR_L);
     }
     sim_set_time_step(sim);       /* the fastest point is now v + v0 */
     int rc = 0;
