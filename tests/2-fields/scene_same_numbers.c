@@ -74,6 +74,7 @@ static const SameCase cases[] = {
     {"tests/4-contact/scenes/bar_flying.cfg", "2.5", 1},
     {"tests/5-usavg/scenes/block_to_rest.cfg", "0.5", 4},
     {"tests/5-usavg/scenes/vibrating_bar.cfg", "2.0", 1},
+    {"tests/8-shapes/scenes/bar_crossing.cfg", "2.0", 1},
 };
 
 /** Scenes of the repository that no earlier stage runs or that another
