@@ -213,10 +213,11 @@ check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) bui
 
 # ---- book, figures, bench ----------------------------------------------------
 # the chapters show these figures (about thirty-two minutes to draw, and
-# fig-growth's four to eight more on a shared two-core machine) and
+# fig-growth's four to eight more, fig-kalthoff's about ten, on a shared
+# two-core machine) and
 # include the tables their scripts write (build/figures/*.txt, on doxygen's
 # EXAMPLE_PATH: a missing one is a warning, so an error)
-DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-petersson fig-slide fig-growth,$(notdir $(wildcard figures/fig*)))
+DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-petersson fig-slide fig-growth fig-kalthoff,$(notdir $(wildcard figures/fig*)))
 # MathJax is copied into the book (not linked), so that it can be moved or
 # served as it is; its sources (unpacked), tests and combined configurations
 # are left out
@@ -291,6 +292,10 @@ FIG_USES_fig-petersson := tests/6-xefg/scenes/petersson.cfg
 FIG_OUT_fig-growth := fig-growth.png fig-growth.txt
 FIG_RUN_fig-growth := build/stage7/mpm build/stage7/tests/support/q4.o
 FIG_USES_fig-growth := tests/7-fracture/scenes/kalthoff_half.cfg tests/support/q4.h
+FIG_OUT_fig-kalthoff := fig-kalthoff.png fig-kalthoff.txt
+FIG_RUN_fig-kalthoff := build/stage6/mpm
+FIG_USES_fig-kalthoff := figures/fig-growth/kalthoff_xefg.cfg \
+    $(addprefix tests/6-xefg/scenes/,kalthoff_coarse.cfg kalthoff_h1_667.cfg)
 
 FIGURES := $(notdir $(wildcard figures/fig*))
 define FIGURE_RULES
