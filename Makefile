@@ -213,7 +213,7 @@ check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) bui
 
 # ---- book, figures, bench ----------------------------------------------------
 # the chapters show these figures (about thirty-two minutes to draw, and
-# fig-growth's four to eight more, fig-kalthoff's about ten, on a shared
+# fig-growth's four to eight more, fig-kalthoff's ten to fifteen, on a shared
 # two-core machine) and
 # include the tables their scripts write (build/figures/*.txt, on doxygen's
 # EXAMPLE_PATH: a missing one is a warning, so an error)

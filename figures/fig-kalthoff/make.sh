@@ -164,7 +164,11 @@ spread=$(awk -F, 'NR > 1 && $7 != "-" { if (lo == "" || $7 < lo) lo = $7; if (hi
     echo
     echo "CPU: $(fig_cpu); $JOBS runs at a time (loop s: each run's own time loop)."
     echo "load average before the runs: $load0; after: $(fig_load)"
-    echo "the figure's runs took $(fig_since "$t_start") s in all"
+    if [ "${REUSE:-0}" = 1 ]; then
+        echo "(REUSE=1: runs kept from an earlier make; this one took $(fig_since "$t_start") s)"
+    else
+        echo "the figure's runs took $(fig_since "$t_start") s in all"
+    fi
 } >"$txt"
 cat "$txt"
 [ "${PLOT:-1}" = 0 ] && exit 0

@@ -26,7 +26,7 @@ set key bottom right opaque
 set object 1 rect from 0,0 to 100,100 fs empty border lc rgb '#888888'
 t70 = 70 * pi / 180
 set arrow 1 from 50,25 to 50 + 75 / tan(t70), 100 nohead lw 1.5 dt 2 lc rgb '#000000'
-set label 1 "experiment, about 70{/Symbol \260}" at 70,90 left
+set label 1 "experiment, about 70{/Symbol \260}" at 66,92 right
 plot '+' using (0):(25):(50):(0) every ::0::0 with vectors nohead lw 3 lc rgb '#888888' title "notch", \
      for [i=1:n] runs.'/path_'.word(names, i).'.txt' every ::1 using 1:2 with linespoints lw 2 pt 7 ps 0.4 \
          lc rgb col(i) title lab(i)
@@ -41,6 +41,7 @@ set ylabel "path length (mm)"
 set size noratio
 set autoscale
 set xrange [0:kxt]
+set yrange [0:100]
 set key top left opaque
 stats runs.'/events_'.word(names, 1).'.txt' using 2 nooutput name 'T1'
 t1 = T1_min
@@ -53,8 +54,8 @@ plot for [i=1:n] runs.'/events_'.word(names, i).'.txt' using 2:5 with linespoint
 set title "(c) the energy balance's error"
 set xlabel "t ({/Symbol m}s)"
 set ylabel "in - kinetic - strain - cohesive (% of in at the end)"
-set key bottom left opaque
-set yrange [*:*]
+set key bottom right opaque
+set autoscale y
 plot for [i=1:n] runs.'/energy_'.word(names, i).'.txt' using 1:4 with lines lw 2 \
          lc rgb col(i) title sprintf("h = %s mm", hh(i))
 unset multiplot
