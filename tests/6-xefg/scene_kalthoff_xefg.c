@@ -12,7 +12,7 @@
  * tip grows by the largest hoop stress of K_I, K_II, each run to 50
  * microseconds. (At h = 2.5 and 25/12 mm no segment grows in 90
  * microseconds: the averaged sigma_1 never reaches f_t; make
- * fig-kalthoff lists them.)
+ * fig-kalthoff lists h = 2.5.)
  *
  * With KALTHOFF_XEFG_OPEN set, h = 1 mm too (figures/fig-growth/
  * kalthoff_xefg.cfg at f_t = 1000 MPa, 50 microseconds): its crack speed
