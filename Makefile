@@ -213,11 +213,11 @@ check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) bui
 
 # ---- book, figures, bench ----------------------------------------------------
 # the chapters show these figures (about thirty-two minutes to draw, and
-# fig-growth's four to eight more, fig-shapes' five, on a shared two-core
-# machine) and
+# fig-growth's four to eight more, fig-kalthoff's ten to fifteen, fig-shapes'
+# five, on a shared two-core machine) and
 # include the tables their scripts write (build/figures/*.txt, on doxygen's
 # EXAMPLE_PATH: a missing one is a warning, so an error)
-DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-petersson fig-slide fig-growth fig-shapes,$(notdir $(wildcard figures/fig*)))
+DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-petersson fig-slide fig-growth fig-kalthoff fig-shapes,$(notdir $(wildcard figures/fig*)))
 # MathJax is copied into the book (not linked), so that it can be moved or
 # served as it is; its sources (unpacked), tests and combined configurations
 # are left out
@@ -296,6 +296,10 @@ FIG_OUT_fig-shapes := fig-shapes.png fig-shapes.txt
 FIG_RUN_fig-shapes := build/stage8/mpm build/stage8/tests/8-shapes/scene_bar_crossing
 FIG_USES_fig-shapes := tests/8-shapes/scenes/bar_crossing.cfg tests/1-mpm/scenes/spinning_disk.cfg \
     tools/task1_cost.sh
+FIG_OUT_fig-kalthoff := fig-kalthoff.png fig-kalthoff.txt
+FIG_RUN_fig-kalthoff := build/stage6/mpm
+FIG_USES_fig-kalthoff := figures/fig-growth/kalthoff_xefg.cfg \
+    $(addprefix tests/6-xefg/scenes/,kalthoff_coarse.cfg kalthoff_h1_667.cfg)
 
 FIGURES := $(notdir $(wildcard figures/fig*))
 define FIGURE_RULES
