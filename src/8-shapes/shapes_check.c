@@ -1,9 +1,9 @@
 /**
  * @file shapes_check.c
  * @brief The limits of uGIMP and CPDI in this stage: the MPM step, one
- *        velocity field per node except across explicit cracks with uGIMP
- *        (no contact), and every domain inside the grid (a node off the
- *        grid would take a share of the point's mass).
+ *        velocity field per node except across explicit cracks (no
+ *        contact), and every domain inside the grid (a node off the grid
+ *        would take a share of the point's mass).
  */
 #include "shapes_check.h"
 
@@ -47,7 +47,6 @@ int gimp_domains_inside(Sim *sim, void *state, Seam seam)
 int shapes_prepare(Sim *sim, void *state, char *err, size_t errlen)
 {
     const Scene *sc = &sim->scene;
-    const Hooks *h = &sim->hooks;
     const char *name = sc->run.shape ? sc->run.shape->name : "linear";
     double at;
     (void)state;
@@ -71,13 +70,6 @@ int shapes_prepare(Sim *sim, void *state, char *err, size_t errlen)
                  "not done (crack_contact.c and crack_normals.c read the four "
                  "nodes of a linear stencil): use run.shape = \"linear\" or "
                  "leave out the cracks' contact", sc->file, name);
-        return -1;
-    }
-    if (h->seam[SEAM_TASK1_FIELDS].n && sc->run.shape == &shape_cpdi) {
-        snprintf(err, errlen, "%s: run.shape = \"cpdi\" with cracks is not "
-                 "done (its deformed domains can reach nodes beyond the 3 x 3 "
-                 "cells the crossing search covers, and no patch test checks "
-                 "it): use run.shape = \"gimp\" or \"linear\"", sc->file);
         return -1;
     }
     if (sc->run.shape == &shape_cpdi)

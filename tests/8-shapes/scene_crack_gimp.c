@@ -1,9 +1,10 @@
 /**
  * @file scene_crack_gimp.c
- * @brief Explicit cracks with uGIMP (chapter 8, "Cracks with GIMP"): the
- *        crack patch test of chapter 2 (paper's section 3.1) with
- *        run.shape = "gimp", and the three crossing searches giving the
- *        same run when a point's stencil reaches 3 x 3 nodes.
+ * @brief Explicit cracks with uGIMP and CPDI (chapter 8, "Cracks with
+ *        GIMP"): the crack patch test of chapter 2 (paper's section 3.1)
+ *        with run.shape = "gimp" and "cpdi", and the three crossing
+ *        searches giving the same run when a point's stencil reaches 3 x 3
+ *        nodes.
  *
  * Both DCB scenes (figures/fig1) get a grid one cell wider on the left,
  * with the crack's mouth on the new edge node: uGIMP's points at the
@@ -16,13 +17,14 @@
  * difference between the upper half of the full run and the half run at
  * most 1e-12 of the largest value it takes.
  *
- * - The crack through the whole beam (asserted): the full beam cut from
+ * - The crack through the whole beam (asserted, uGIMP and CPDI): the full
+ *   beam cut from
  *   end to end by a crack on the mid-plane against its upper half alone,
  *   both free (no symmetry condition: each half flies off with its load).
  *   Only the crack's fields separate the halves, so every pair of the
  *   wider stencil that crosses the crack must get the right field.
  * - The paper's patch test (the crack half way, the half beam held on the
- *   ligament by symmetry): OPEN with uGIMP, asserted only with
+ *   ligament by symmetry): OPEN with uGIMP (and CPDI), asserted only with
  *   CRACK_GIMP_OPEN=1. Ahead of the tip a point's domain that crosses the
  *   mid-plane reaches the node row below it; in the full run that node
  *   carries the lower half's mirror velocity, in the half run only the
@@ -41,16 +43,18 @@
 #include "testkit.h"
 
 static const char *run_time = "run.time=20.0";
+static const char *shape = "run.shape=\"gimp\"";   /* the tests' shape */
 
-/** Load @p file with uGIMP on the grid widened by a cell on the left
- *  (and two on the right when @p through), the crack (when @p crack) from
- *  its edge node to x = 50 or through the beam, and @p more (or NULL). */
+/** Load @p file with the tests' shape on the grid widened by a cell on the
+ *  left (and two on the right when @p through), the crack (when @p crack)
+ *  from its edge node to x = 50 or through the beam, and @p more (or
+ *  NULL). */
 static Sim *load_gimp(const char *file, int crack, int through,
                       const char *more)
 {
     const char *ov[8];
     int n = 0;
-    ov[n++] = "run.shape=\"gimp\"";
+    ov[n++] = shape;
     ov[n++] = "grid.origin=[-3.9215686274509802, -20.0]";
     ov[n++] = through ? "grid.cells=[56, 20]" : "grid.cells=[54, 20]";
     ov[n++] = run_time;
@@ -87,8 +91,8 @@ static int keyed_beyond_cell(const Sim *sim)
     return count;
 }
 
-/** Run the full and half scenes with uGIMP; print and return the patch
- *  test's differences. */
+/** Run the full and half scenes with the tests' shape; print and return
+ *  the patch test's differences. */
 static Patch gimp_patch(int through)
 {
     Sim *full = load_gimp("figures/fig1/dcb_full.cfg", 1, through, NULL);
@@ -96,8 +100,8 @@ static Patch gimp_patch(int through)
     assert_true(full->nsteps == half->nsteps);
     assert_int_equal(full->fields.width, STENCIL_MAX);
     Patch r = patch_compare(full, half, half->nsteps);
-    printf("uGIMP, crack %s, %ld steps to t = %g ms; pairs keyed beyond the "
-           "cell's four on the last step: %d\n", through ? "through the beam" :
+    printf("%s, crack %s, %ld steps to t = %g ms; pairs keyed beyond the "
+           "cell's four on the last step: %d\n", shape, through ? "through the beam" :
            "to x = 50 (paper)", full->step, full->t, keyed_beyond_cell(full));
     patch_print(&r);
     tk_free(full);
@@ -114,6 +118,15 @@ static void crack_through_the_beam(void **state)
         assert_true(r.diff[q] <= 1e-12 * r.scale[q]);
 }
 /// [patch_gimp]
+
+/** The same with CPDI, whose domains the material carries (Task 7 reads
+ *  the step's fields to turn them). */
+static void crack_through_the_beam_cpdi(void **state)
+{
+    shape = "run.shape=\"cpdi\"";
+    crack_through_the_beam(state);
+    shape = "run.shape=\"gimp\"";
+}
 
 static void paper_patch_test_open(void **state)
 {
@@ -175,6 +188,7 @@ int main(void)
     }
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(crack_through_the_beam),
+        cmocka_unit_test(crack_through_the_beam_cpdi),
         cmocka_unit_test(paper_patch_test_open),
         cmocka_unit_test(searches_agree_with_gimp),
     };
