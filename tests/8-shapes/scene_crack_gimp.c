@@ -8,9 +8,9 @@
  *
  * Both DCB scenes (figures/fig1) get a grid one cell wider on the left,
  * with the crack's mouth on the new edge node: uGIMP's points at the
- * beam's end reach a node one cell further than linear's (a weight of
- * order 1e-32 at 1 + l cells, from rounding), and a mouth on that node
- * would move with their velocity and leave the grid.
+ * beam's end reach a node one cell further than linear's (a node exactly
+ * 1 + l cells away gets a weight of rounding size), and a mouth on that
+ * node would move with their velocity and leave the grid.
  *
  * The bound, fixed before the first GIMP run, is chapter 2's for linear
  * shape functions (tests/2-fields/scene_patch.c): each quantity's largest
