@@ -133,7 +133,7 @@ scatter_strip(Sim *sim, int t, unsigned what, StencilFn wide)
         Stencil st;
         int p = S->list[k], n = STENCIL_NODES;
         if (wide) {
-            wide(sim, p, &st);
+            stencil_wide(sim, wide, p, &st);
             n = st.n;
         } else
             stencil_linear(sim, p, &st);
@@ -172,7 +172,7 @@ static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what)
     const Transfer *tr = sim->scene.run.transfer;
     for (int p = 0; p < P->n; p++) {
         Stencil st;
-        wide(sim, p, &st);
+        stencil_wide(sim, wide, p, &st);
         scatter_point(P, g, p, &st, st.n, what, NULL);
         if (tr && (what & (EXTRAP_MASS | EXTRAP_MOMENTUM)))
             tr->scatter(sim, p, &st, g, NULL); /* run.transfer (chapter 8) */

@@ -8,8 +8,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "shape.h"
 #include "sim.h"
+#include "stencil.h"
 #include "step.h"
 
 /** Grow *a (of @p size bytes per element) from @p old to @p cap elements. */
@@ -28,7 +28,7 @@ static int reserve_rows(FieldTable *F, int rows)
 {
     if (rows <= F->row_cap)
         return 0;
-    int cap = F->row_cap > 0 ? F->row_cap : 64, n = STENCIL_NODES;
+    int cap = F->row_cap > 0 ? F->row_cap : 64, n = F->width;
     while (cap < rows)
         cap *= 2;
     if (grow((void **)&F->row_point, sizeof(int), F->row_cap, cap) ||
@@ -61,6 +61,7 @@ int fields_enable(Sim *sim)
     int nn = sim->grid.nnodes, np = sim->pts.n;
     if (F->first)
         return 0;
+    F->width = sim->scene.run.shape ? sim->scene.run.shape->nodes : STENCIL_NODES;
     F->first = malloc(sizeof(int) * (size_t)nn);
     F->touched = malloc(sizeof(int) * (size_t)nn);
     F->row_of = malloc(sizeof(int) * ((size_t)np + 1));
@@ -86,10 +87,13 @@ void fields_begin_step(Sim *sim)
 }
 
 /// [fields_key]
-int fields_key(Sim *sim, int p, int a, unsigned key)
+/** Add @p key to pair (@p p, @p a) in rows of @p n pairs (a constant
+ *  STENCIL_NODES for linear rows, FieldTable::width for wider ones). */
+static inline __attribute__((always_inline)) int
+key_pair(Sim *sim, int p, int a, unsigned key, int n)
 {
     FieldTable *F = &sim->fields;
-    int r = F->row_of[p], n = STENCIL_NODES;
+    int r = F->row_of[p];
     if (r < 0) {                             /* the point's first keyed pair */
         if (reserve_rows(F, F->nrows + 1))
             return step_fail(sim, p, "memory for the pair table", F->nrows);
@@ -101,10 +105,20 @@ int fields_key(Sim *sim, int p, int a, unsigned key)
     F->row_key[n * r + a] |= key;
     return 0;
 }
+
+int fields_key(Sim *sim, int p, int a, unsigned key)
+{
+    return key_pair(sim, p, a, key, STENCIL_NODES);
+}
+
+int fields_key_wide(Sim *sim, int p, int a, unsigned key)
+{
+    return key_pair(sim, p, a, key, sim->fields.width);
+}
 /// [fields_key]
 
 /** The slot of @p key at node @p n; created (in key order) when missing. */
-static int node_slot(Sim *sim, int n, unsigned key)
+static inline __attribute__((always_inline)) int node_slot(Sim *sim, int n, unsigned key)
 {
     FieldTable *F = &sim->fields;
     Grid *g = &sim->grid;
@@ -132,14 +146,17 @@ static int node_slot(Sim *sim, int n, unsigned key)
 }
 
 /// [fields_resolve]
-int fields_resolve(Sim *sim)
+/** The slots of every keyed pair, through run.shape's stencil function
+ *  @p wide, or NULL for the cell's four nodes. */
+static inline __attribute__((always_inline)) int
+resolve_rows(Sim *sim, StencilFn wide)
 {
     FieldTable *F = &sim->fields;
-    int n = STENCIL_NODES;
+    int n = F->width;
     for (int r = 0; r < F->nrows; r++) {
-        int p = F->row_point[r], node[STENCIL_NODES];
-        stencil_nodes(sim, p, node);
-        for (int a = 0; a < n; a++) {
+        int p = F->row_point[r], node[STENCIL_MAX];
+        int reach = stencil_node_list(sim, wide, p, node);
+        for (int a = 0; a < reach; a++) {
             unsigned key = F->row_key[n * r + a];
             int s = key ? node_slot(sim, node[a], key) : node[a];
             if (s < 0)
@@ -148,6 +165,26 @@ int fields_resolve(Sim *sim)
         }
     }
     return 0;
+}
+
+/** The slots through the cell's four nodes, compiled on its own (the
+ *  code a scene without a wider stencil ran before chapter 8). */
+static __attribute__((noinline)) int resolve_linear(Sim *sim)
+{
+    return resolve_rows(sim, NULL);
+}
+
+/** The slots through run.shape's stencil function (chapter 8). */
+static __attribute__((noinline)) int resolve_wide(Sim *sim)
+{
+    return resolve_rows(sim, sim->scene.run.stencil);
+}
+
+int fields_resolve(Sim *sim)
+{
+    if (sim->scene.run.stencil)              /* another row of run.shape */
+        return resolve_wide(sim);
+    return resolve_linear(sim);              /* the paper's four nodes */
 }
 /// [fields_resolve]
 

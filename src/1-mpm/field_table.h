@@ -8,7 +8,8 @@
  * contact group, from stage 4) uses the node's slot of that key, created
  * the first time a step needs it. The extra slots of a node form a short
  * list sorted by key. A point whose four pairs all have key 0 has no row
- * in the pair table and costs what it costs in conventional MPM; a scene
+ * in the pair table and costs what it costs in conventional MPM (so does a
+ * point of a wider stencil, chapter 8, whose pairs all have key 0); a scene
  * whose stages key nothing has no table at all.
  *
  * The table grows by doubling when a step needs more room, during Task 1,
@@ -32,8 +33,10 @@ typedef struct FieldTable {
     int ntouched;      /**< how many */
     int *row_of;       /**< per point: its pair row, or -1 */
     int *row_point;    /**< per row: the point */
-    unsigned *row_key; /**< 4 per row: key of each pair */
-    int *row_slot;     /**< 4 per row: slot of each pair (after Task 1) */
+    unsigned *row_key; /**< width per row: key of each pair */
+    int *row_slot;     /**< width per row: slot of each pair (after Task 1) */
+    int width;         /**< pairs per row: the most nodes a point of
+                            run.shape reaches (4 linear, 9 uGIMP) */
     int nrows;         /**< rows in use this step */
     int row_cap;       /**< rows allocated */
 } FieldTable;
@@ -46,10 +49,19 @@ int fields_enable(struct Sim *sim);
 void fields_begin_step(struct Sim *sim);
 
 /**
- * @brief Add @p key bits to the key of pair (point @p p, corner @p a).
+ * @brief Add @p key bits to the key of pair (point @p p, corner @p a) of a
+ *        table of linear rows (FieldTable::width == STENCIL_NODES: stage 8
+ *        refuses contact with a wider run.shape).
  * @return 0, or -1 when memory is exhausted (Sim::fail filled).
  */
 int fields_key(struct Sim *sim, int p, int a, unsigned key);
+
+/**
+ * @brief As fields_key(), for pair @p a of a wider stencil's rows
+ *        (FieldTable::width pairs each: uGIMP, chapter 8).
+ * @return 0, or -1 when memory is exhausted (Sim::fail filled).
+ */
+int fields_key_wide(struct Sim *sim, int p, int a, unsigned key);
 
 /**
  * @brief Task 1 ends: give every keyed pair the slot of its key at its

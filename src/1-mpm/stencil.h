@@ -47,12 +47,38 @@ static inline void stencil_linear(const Sim *sim, int p, Stencil *st)
 
 /// [stencil]
 
+/// [stencil_wide]
+/** @brief The field slots Task 1 gave the pairs of point @p p, over the
+ *         Stencil::n nodes of a stencil of run.shape's table, in the order
+ *         its function gives them (the order Task 1 keyed them in). */
+static inline void stencil_fields(const Sim *sim, int p, Stencil *st)
+{
+    const FieldTable *F = &sim->fields;
+    if (F->row_of) {                       /* a keyed pair uses its slot */
+        int r = F->row_of[p];
+        if (r >= 0)
+            for (int a = 0; a < st->n; a++)
+                st->slot[a] = F->row_slot[F->width * r + a];
+    }
+}
+
+/** @brief The stencil of point @p p through @p wide, a row of run.shape's
+ *         table (chapter 8): its nodes, S_ip and G_ip, then the field
+ *         slots of its pairs. */
+static inline void stencil_wide(const Sim *sim, StencilFn wide, int p,
+                                Stencil *st)
+{
+    wide(sim, p, st);
+    stencil_fields(sim, p, st);
+}
+/// [stencil_wide]
+
 /** @brief The stencil of point @p p: run.shape's (linear unless the scene
  *         chose another row). @return the nodes in use, Stencil::n */
 static inline int stencil_of_point(const Sim *sim, int p, Stencil *st)
 {
-    if (sim->scene.run.stencil) {
-        sim->scene.run.stencil(sim, p, st); /* another row of run.shape */
+    if (sim->scene.run.stencil) {         /* another row of run.shape */
+        stencil_wide(sim, sim->scene.run.stencil, p, st);
         return st->n;
     }
     stencil_linear(sim, p, st);
@@ -70,12 +96,32 @@ static inline void stencil_at(const Grid *g, double x, double y, Stencil *st)
     shape_cell_nodes(g, cell, st->slot);
 }
 
-/** @brief The nodes of point @p p's linear stencil, its cell's four (Task
- *         1 needs no more: the stages that key fields run with linear
- *         shape functions only, chapter 8). */
+/** @brief The nodes of point @p p's linear stencil, its cell's four
+ *         (stage 4's contact runs with linear shape functions only). */
 static inline void stencil_nodes(const Sim *sim, int p, int node[STENCIL_NODES])
 {
     shape_cell_nodes(&sim->grid, sim->pts.cell[p], node);
 }
+
+/// [stencil_node_list]
+/** @brief The nodes of point @p p's stencil, in its order: the pairs Task 1
+ *         keys. @p wide is run.shape's stencil function (up to STENCIL_MAX
+ *         nodes with uGIMP, chapter 8), or NULL for the cell's four (a
+ *         constant NULL compiles to the linear loop alone). @return how
+ *         many */
+static inline __attribute__((always_inline)) int
+stencil_node_list(const Sim *sim, StencilFn wide, int p, int node[STENCIL_MAX])
+{
+    if (wide) {                            /* another row of run.shape */
+        Stencil st;
+        wide(sim, p, &st);
+        for (int a = 0; a < st.n; a++)
+            node[a] = st.slot[a];          /* field 0: the nodes */
+        return st.n;
+    }
+    stencil_nodes(sim, p, node);
+    return STENCIL_NODES;
+}
+/// [stencil_node_list]
 
 #endif

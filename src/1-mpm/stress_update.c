@@ -60,7 +60,7 @@ static void rotate_with_spin(Sim *sim, double dt_star)
     else                                /* another row of run.shape */
         for (int p = 0; p < sim->pts.n; p++) {
             Stencil st;
-            wide(sim, p, &st);
+            stencil_wide(sim, wide, p, &st);
             rotate_point(sim, p, &st, st.n, dt_star);
         }
 }
@@ -128,7 +128,7 @@ static int update_stress_wide(Sim *sim, StencilFn wide, double dt_star)
     int rc = 0;
     for (int p = 0; p < sim->pts.n; p++) {
         Stencil st;
-        wide(sim, p, &st);
+        stencil_wide(sim, wide, p, &st);
         if (strain_point(sim, p, &st, st.n, dt_star))
             rc = -1;
     }

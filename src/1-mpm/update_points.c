@@ -68,7 +68,7 @@ static int update_points_wide(Sim *sim, StencilFn wide)
     const Transfer *tr = sim->scene.run.transfer;
     for (int p = 0; p < np; p++) {
         Stencil st;
-        wide(sim, p, &st);
+        stencil_wide(sim, wide, p, &st);
         if (move_point(sim, p, &st, st.n, xmax, ymax))
             rc = -1;
         else if (tr)

@@ -17,18 +17,19 @@ static int cracks_tell_crossed(Sim *sim, const Cracks *C, int p, int a,
 }
 
 /// [cracks_key_fields]
-int cracks_key_fields(Sim *sim, void *state, Seam seam)
+/** Task 1 over the pairs of every point near a crack, through run.shape's
+ *  stencil function @p wide, or NULL for the cell's four nodes. */
+static inline __attribute__((always_inline)) int
+key_fields(Sim *sim, const Cracks *C, StencilFn wide)
 {
-    const Cracks *C = state;
     const Grid *g = &sim->grid;
     const Particles *P = &sim->pts;
-    (void)seam;
     for (int p = 0; p < P->n; p++) {
-        int node[STENCIL_NODES], cell = P->cell[p];
+        int node[STENCIL_MAX], cell = P->cell[p];
         if (C->near_cell && C->near_cell[cell] < 0)
             continue;                        /* no crack near: field 0 */
-        stencil_nodes(sim, p, node);
-        for (int a = 0; a < STENCIL_NODES; a++) {
+        int n = stencil_node_list(sim, wide, p, node);
+        for (int a = 0; a < n; a++) {
             CrackHit hit;
             int f = crack_field(C, cell, P->x[p], P->y[p], grid_node_x(g, node[a]),
                                 grid_node_y(g, node[a]), &hit);
@@ -37,13 +38,36 @@ int cracks_key_fields(Sim *sim, void *state, Seam seam)
                                  "than CROSSINGS_MAX)", node[a]);
             if (!f)
                 continue;                    /* field 0: nothing to key */
-            if (fields_key(sim, p, a, (unsigned)f << C->side_shift))
+            unsigned key = (unsigned)f << C->side_shift;
+            if (wide ? fields_key_wide(sim, p, a, key) : fields_key(sim, p, a, key))
                 return -1;
             if (C->ncrossed && cracks_tell_crossed(sim, C, p, a, &hit))
                 return -1;                   /* later stages' subscribers */
         }
     }
     return 0;
+}
+
+/** Task 1 through the cell's four nodes (the paper's), compiled on its
+ *  own so that a scene without a wider stencil runs the code it ran
+ *  before chapter 8. */
+static __attribute__((noinline)) int key_fields_linear(Sim *sim, const Cracks *C)
+{
+    return key_fields(sim, C, NULL);
+}
+
+/** Task 1 through run.shape's stencil function (chapter 8). */
+static __attribute__((noinline)) int key_fields_wide(Sim *sim, const Cracks *C)
+{
+    return key_fields(sim, C, sim->scene.run.stencil);
+}
+
+int cracks_key_fields(Sim *sim, void *state, Seam seam)
+{
+    (void)seam;
+    if (sim->scene.run.stencil)              /* another row of run.shape */
+        return key_fields_wide(sim, state);
+    return key_fields_linear(sim, state);    /* the paper's four nodes */
 }
 /// [cracks_key_fields]
 

@@ -10,6 +10,7 @@
 
 #include "cracks.h"
 #include "scene_read.h"
+#include "shape.h"
 
 /** Read the list of points of one crack into @p c (checked afterwards by
  *  crack_check_points()). */
@@ -225,6 +226,7 @@ int cracks_prepare(Sim *sim, void *state, char *err, size_t errlen)
             return -1;
         }
     }
+    C->reach = sc->run.shape && sc->run.shape->nodes > STENCIL_NODES;
     if (C->search->update && C->search->update(C, &sim->grid)) {
         snprintf(err, errlen, "%s: cracks: out of memory for the crossing "
                  "search \"%s\"", sc->file, C->search->name);

@@ -45,12 +45,13 @@ struct Cracks;
 /** A row of the crossing-search table (run.crack_search): which segments
  *  Task 1 tests for a particle-node line. Every row must give the same
  *  fields; crossings_result() does not depend on the order of visits.
- *  A point's lines to its nodes lie in its grid cell, so a search may
- *  answer per cell. */
+ *  A point's lines to its nodes lie in its grid cell and the
+ *  Cracks::reach cells around it, so a search may answer per cell. */
 typedef struct CrossingSearch {
     const char *name;    /**< value of run.crack_search */
     /** Test the segments the line from (px, py) to (nx, ny), inside cell
-     *  @p cell, may cross with crossings_test(), in any order. */
+     *  @p cell or Cracks::reach cells around it, may cross with
+     *  crossings_test(), in any order. */
     void (*visit)(const struct Cracks *C, int cell, double px, double py,
                   double nx, double ny, Crossings *x);
     /** Bring the search's own data, and Cracks::near_cell if it keeps
@@ -82,6 +83,10 @@ typedef struct Cracks {
     int ncracks;                  /**< number of cracks */
     Crack *crack;                 /**< the cracks */
     int side_shift;               /**< where the side sits in the field key */
+    /** Cells around a point's own that its lines to its nodes may cross:
+     *  0 with the cell's four nodes (linear), 1 when run.shape reaches
+     *  more (a domain at most a cell wide, 3 x 3 nodes: chapter 8). */
+    int reach;
     /** Later stages' subscribers to Task 1's crossings, in the order
      *  they subscribed (cracks_on_crossed()); none in stages 2 and 3. */
     struct {

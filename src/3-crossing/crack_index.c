@@ -5,7 +5,8 @@
  *
  * A point's lines to its four nodes lie in its cell, so only the segments
  * of that cell can cross them, and a point in a cell no segment reaches
- * skips Task 1. The index costs in proportion to the segments and the
+ * skips Task 1. With a wider stencil (Cracks::reach, chapter 8) a cell
+ * lists the segments that reach it or the cells around it. The index costs in proportion to the segments and the
  * cells they reach, not to the points.
  */
 #include <math.h>
@@ -60,9 +61,9 @@ static int clamp_cell(double g, int n)
 }
 
 /// [index_update]
-/** Rebuild the index: each segment goes into every cell whose box, grown
- *  by eps, its grown box meets and whose corners do not all lie strictly
- *  on one side of its line. */
+/** Rebuild the index: each segment goes into every cell whose box (with
+ *  the Cracks::reach cells around it), grown by eps, its grown box meets
+ *  and whose corners do not all lie strictly on one side of its line. */
 static int index_update(Cracks *C, const Grid *g)
 {
     SegmentIndex *ix = C->search_state;
@@ -85,19 +86,23 @@ static int index_update(Cracks *C, const Grid *g)
         ix->head[ix->touched[k]] = -1;
     ix->ntouched = ix->n = 0;
     double eps = sg->eps;
+    int R = C->reach, wide = 2 * R + 1;    /* the block of cells a point's
+                                              lines may cross */
     for (int k = 0; k < C->ncracks; k++) {
         const Crack *c = &C->crack[k];
         for (int j = 0; j + 1 < c->n; j++) {
             double ax = c->x[j], ay = c->y[j], bx = c->x[j + 1], by = c->y[j + 1];
             double len = hypot(bx - ax, by - ay);
-            int i0 = clamp_cell((fmin(ax, bx) - 2 * eps - sg->ox) / sg->dx, sg->ncx);
-            int i1 = clamp_cell((fmax(ax, bx) + 2 * eps - sg->ox) / sg->dx, sg->ncx);
-            int j0 = clamp_cell((fmin(ay, by) - 2 * eps - sg->oy) / sg->dy, sg->ncy);
-            int j1 = clamp_cell((fmax(ay, by) + 2 * eps - sg->oy) / sg->dy, sg->ncy);
+            int i0 = clamp_cell((fmin(ax, bx) - 2 * eps - sg->ox) / sg->dx - R, sg->ncx);
+            int i1 = clamp_cell((fmax(ax, bx) + 2 * eps - sg->ox) / sg->dx + R, sg->ncx);
+            int j0 = clamp_cell((fmin(ay, by) - 2 * eps - sg->oy) / sg->dy - R, sg->ncy);
+            int j1 = clamp_cell((fmax(ay, by) + 2 * eps - sg->oy) / sg->dy + R, sg->ncy);
             for (int cj = j0; cj <= j1; cj++)
                 for (int ci = i0; ci <= i1; ci++) {
-                    double x0 = sg->ox + ci * sg->dx - eps, x1 = x0 + sg->dx + 2 * eps;
-                    double y0 = sg->oy + cj * sg->dy - eps, y1 = y0 + sg->dy + 2 * eps;
+                    double x0 = sg->ox + (ci - R) * sg->dx - eps;
+                    double x1 = x0 + wide * sg->dx + 2 * eps;
+                    double y0 = sg->oy + (cj - R) * sg->dy - eps;
+                    double y1 = y0 + wide * sg->dy + 2 * eps;
                     int above = 0, below = 0;   /* corners off the line */
                     double cx[4] = {x0, x1, x0, x1}, cy[4] = {y0, y0, y1, y1};
                     for (int q = 0; q < 4; q++) {

@@ -127,7 +127,7 @@ void apic_set_gradient(Sim *sim, int p, const double L[4])
     Apic *A = (Apic *)sim->scene.run.transfer;
     Stencil st;
     double D[3];
-    sim->scene.run.stencil(sim, p, &st);
+    stencil_of_point(sim, p, &st);
     apic_inertia(&sim->grid, &sim->pts, p, &st, D);
     double *B = &A->B[4 * p];
     B[0] = L[0] * D[0] + L[1] * D[1];

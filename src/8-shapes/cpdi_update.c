@@ -58,7 +58,7 @@ static int cpdi_update(Sim *sim, void *state, Seam seam)
     (void)seam;
     for (int p = 0; p < sim->pts.n; p++) {
         Stencil st;
-        cpdi_stencil(sim, p, &st);
+        stencil_wide(sim, cpdi_stencil, p, &st); /* the step's fields */
         double L[4] = {0, 0, 0, 0};              /* xx, xy, yx, yy */
         for (int a = 0; a < st.n; a++) {
             int s = st.slot[a];

@@ -1,8 +1,9 @@
 /**
  * @file shapes_check.c
  * @brief The limits of uGIMP and CPDI in this stage: the MPM step, one
- *        velocity field per node, and every domain inside the grid (a node
- *        off the grid would take a share of the point's mass).
+ *        velocity field per node except across explicit cracks (no
+ *        contact), and every domain inside the grid (a node off the grid
+ *        would take a share of the point's mass).
  */
 #include "shapes_check.h"
 
@@ -46,7 +47,6 @@ int gimp_domains_inside(Sim *sim, void *state, Seam seam)
 int shapes_prepare(Sim *sim, void *state, char *err, size_t errlen)
 {
     const Scene *sc = &sim->scene;
-    const Hooks *h = &sim->hooks;
     const char *name = sc->run.shape ? sc->run.shape->name : "linear";
     double at;
     (void)state;
@@ -58,10 +58,18 @@ int shapes_prepare(Sim *sim, void *state, char *err, size_t errlen)
                  sc->file, name, sc->run.method->name);
         return -1;
     }
-    if (h->seam[SEAM_TASK1_FIELDS].n) {
-        snprintf(err, errlen, "%s: run.shape = \"%s\" with cracks or contact "
-                 "between bodies (several velocity fields at a node) is not done "
-                 "yet (chapter 8): use run.shape = \"linear\"", sc->file, name);
+    if (sim_state(sim, "material contact")) {
+        snprintf(err, errlen, "%s: run.shape = \"%s\" with contact between "
+                 "bodies is not done (material_contact.c keys and reads the "
+                 "four nodes of a linear stencil): use run.shape = \"linear\"",
+                 sc->file, name);
+        return -1;
+    }
+    if (sim_state(sim, "crack contact")) {
+        snprintf(err, errlen, "%s: run.shape = \"%s\" with crack contact is "
+                 "not done (crack_contact.c and crack_normals.c read the four "
+                 "nodes of a linear stencil): use run.shape = \"linear\" or "
+                 "leave out the cracks' contact", sc->file, name);
         return -1;
     }
     if (sc->run.shape == &shape_cpdi)

@@ -20,12 +20,11 @@
  * specimen at 0 < y < 36) and prints the same lines without judging them:
  * the mirror image is then lost to rounding (chapter 2 quotes the ratios).
  */
+#include "crack_patch.h"
 #include "testkit.h"
 
 #include <stdio.h>
 #include <stdlib.h>
-
-enum { NQ = 10 };
 
 static double shift;      /* PATCH_SHIFT_Y (mm); 0: the test */
 
@@ -62,39 +61,12 @@ static void full_run_equals_half_run(void **state)
     shifted(0, bh, oh);
     Sim *full = tk_load_file("figures/fig1/dcb_full.cfg", shift != 0 ? of : NULL);
     Sim *half = tk_load_file("figures/fig1/dcb_half.cfg", shift != 0 ? oh : NULL);
-    int n = half->pts.n, off = full->pts.n - n;
-    assert_int_equal(full->pts.n, 2 * n);
-    assert_true(full->dt == half->dt && full->nsteps == half->nsteps);
-    /* the upper half of the full body is generated after the lower half,
-       row by row, in the same order as the half body */
-    for (int p = 0; p < n; p++) {
-        assert_true(full->pts.x[off + p] == half->pts.x[p]);
-        assert_true(full->pts.y[off + p] == half->pts.y[p]);
-    }
-    double diff[NQ] = {0},
-           scale[NQ] = {0};
-    static const char *name[NQ] = {"x", "y", "vx", "vy", "sigma_xx", "sigma_yy",
-                                   "sigma_xy", "eps_xx", "eps_yy", "eps_xy"};
-    for (long s = 0; s < half->nsteps; s++) {
-        tk_steps(full, 1);
-        tk_steps(half, 1);
-        const Particles *F = &full->pts, *H = &half->pts;
-        const double *fa[NQ] = {F->x, F->y, F->vx, F->vy, F->sxx, F->syy,
-                                F->sxy, F->exx, F->eyy, F->exy};
-        const double *ha[NQ] = {H->x, H->y, H->vx, H->vy, H->sxx, H->syy,
-                                H->sxy, H->exx, H->eyy, H->exy};
-        for (int q = 0; q < NQ; q++)
-            for (int p = 0; p < n; p++) {
-                diff[q] = fmax(diff[q], fabs(fa[q][off + p] - ha[q][p]));
-                scale[q] = fmax(scale[q], fabs(ha[q][p]));
-            }
-    }
-    for (int q = 0; q < NQ; q++) {
-        printf("%-9s max |full - half| = %.3g, largest value %.3g, ratio %.3g\n",
-               name[q], diff[q], scale[q], diff[q] / scale[q]);
+    assert_true(full->nsteps == half->nsteps);
+    Patch r = patch_compare(full, half, half->nsteps);
+    patch_print(&r);
+    for (int q = 0; q < PATCH_NQ; q++)
         if (shift == 0)
-            assert_true(diff[q] <= 1e-12 * scale[q]);
-    }
+            assert_true(r.diff[q] <= 1e-12 * r.scale[q]);
     tk_free(full);
     tk_free(half);
 }

@@ -56,7 +56,9 @@
  * This test asserts the three on the 2 mm and 1 mm grids (about 20 s).  With
  * TIP_STUDY=dir in the environment it instead reads the runs that
  * figures/fig-tip/make.sh made with build/stage3/mpm (dir/NAME/) and prints
- * the study's tables, writing one CSV per run into $TIP_CSV_DIR if set.
+ * the study's tables, writing one CSV per run into $TIP_CSV_DIR if set;
+ * TIP_RUNS="tip_node_2mm tip_node_1mm" reads those runs only (chapter 8
+ * runs them with uGIMP on build/stage8/mpm, the same tables).
  */
 #include "stencil.h"
 #include "testkit.h"
@@ -610,14 +612,32 @@ static int read_run(Run *r, const char *dir)
 
 static int study(const char *dir)
 {
-    static const char *const names[] = {
+    static const char *names[] = {
         "tip_node_2mm", "tip_mid_51", "tip_node_1mm", "tip_mid_101",
         "tip_node_05mm", "tip_mid_201"};
-    enum { NRUNS = sizeof names / sizeof names[0] };
+    enum { NALL = sizeof names / sizeof names[0] };
     const char *hs = getenv("TIP_FEA_H");
     double h = hs ? atof(hs) : 0.125;
     const char *csv = getenv("TIP_CSV_DIR");
-    Run runs[NRUNS];
+    /* TIP_RUNS="name ...": only these runs of the list (chapter 8 reads
+       the two tips on a node run with uGIMP); the FEA is loaded from
+       tip_node_1mm's points where it is among them, else the first's */
+    const char *only = getenv("TIP_RUNS");
+    int NRUNS = 0, load = 0;
+    for (int k = 0; k < NALL; k++) {
+        const char *at = only ? strstr(only, names[k]) : names[k];
+        size_t len = strlen(names[k]);
+        if (at && (at[len] == '\0' || at[len] == ' ')) {
+            if (!strcmp(names[k], "tip_node_1mm"))
+                load = NRUNS;
+            names[NRUNS++] = names[k];
+        }
+    }
+    if (NRUNS == 0) {
+        fprintf(stderr, "TIP_RUNS=%s: none of the study's runs\n", only);
+        return 1;
+    }
+    Run runs[NALL];
     char err[1024], path[512];
     for (int k = 0; k < NRUNS; k++) {
         snprintf(path, sizeof path, SCENES "%s.cfg", names[k]);
@@ -629,7 +649,7 @@ static int study(const char *dir)
         run_init(&runs[k], names[k], sim);
     }
     Fea f;                       /* loaded where the points were at first */
-    if (fea_init(&f, h, runs[2].sim)) {
+    if (fea_init(&f, h, runs[load].sim)) {
         fprintf(stderr, "FEA failed\n");
         return 1;
     }

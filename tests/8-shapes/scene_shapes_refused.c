@@ -1,8 +1,9 @@
 /**
  * @file scene_shapes_refused.c
  * @brief What stage 8 refuses with run.shape = "gimp" or "cpdi", with exit
- *        status 1 and a message naming the scene: cracks (keyed velocity
- *        fields, not done yet) and another run.method; and the stop (exit
+ *        status 1 and a message naming the scene: contact between bodies
+ *        and crack contact (cracks alone run: scene_crack_gimp.c) and
+ *        another run.method; and the stop (exit
  *        status 3, naming step and point) when a domain leaves the grid:
  *        the DCB's beam against the grid's left edge (grid.origin moved to
  *        the beam's end) loses a point's domain in its first step.
@@ -27,10 +28,14 @@ static void ends(const char *args, int status, const char *expect)
 static void what_the_smooth_shapes_refuse(void **state)
 {
     (void)state;
-    ends("figures/fig1/dcb_full.cfg -q -o build/test-shapes-refused run.shape=gimp", 1,
-         "figures/fig1/dcb_full.cfg: run.shape = \"gimp\" with cracks or contact");
-    ends("figures/fig1/dcb_full.cfg -q -o build/test-shapes-refused run.shape=cpdi", 1,
-         "run.shape = \"cpdi\" with cracks or contact");
+    ends("tests/4-contact/scenes/bars_touching.cfg -q -o build/test-shapes-refused "
+         "run.shape=gimp", 1, "tests/4-contact/scenes/bars_touching.cfg: run.shape "
+         "= \"gimp\" with contact between bodies is not done");
+    ends("tests/4-contact/scenes/dcb_contact_never.cfg -q -o build/test-shapes-refused "
+         "run.shape=gimp", 1, "tests/4-contact/scenes/dcb_contact_never.cfg: "
+         "run.shape = \"gimp\" with crack contact is not done");
+    ends("tests/4-contact/scenes/dcb_contact_never.cfg -q -o build/test-shapes-refused "
+         "run.shape=cpdi", 1, "run.shape = \"cpdi\" with crack contact is not done");
     ends("tests/1-mpm/scenes/spinning_disk.cfg -q -o build/test-shapes-refused "
          "run.shape=gimp run.method=xefg run.stress_rate=unrotated", 1,
          "needs run.method = \"mpm\"");
