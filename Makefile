@@ -11,6 +11,7 @@
 #                            redrawn when a file it reads changes; REDRAW=1
 #                            redraws anyway, say with other environment settings)
 #   make bench               particle-steps per second and memory per point
+#   make tsan                the threaded tests under ThreadSanitizer (clang)
 #   make fuzz                the scene reader under libFuzzer (clang), for
 #                            FUZZ_SECONDS (600) in FUZZ_JOBS (2) workers
 #   make same-numbers BASE=rev  every scene, scheme and stage byte for byte
