@@ -11,6 +11,7 @@
 #                            redrawn when a file it reads changes; REDRAW=1
 #                            redraws anyway, say with other environment settings)
 #   make bench               particle-steps per second and memory per point
+#   make tsan                the threaded tests under ThreadSanitizer (clang)
 #   make fuzz                the scene reader under libFuzzer (clang), for
 #                            FUZZ_SECONDS (600) in FUZZ_JOBS (2) workers
 #   make same-numbers BASE=rev  every scene, scheme and stage byte for byte
@@ -28,6 +29,17 @@ CFLAGS_asan := $(WARN) $(OMP) -O1 -g -fno-omit-frame-pointer \
                -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all
 LDFLAGS_release :=
 LDFLAGS_asan := -fsanitize=address,undefined,float-cast-overflow
+# make tsan: ThreadSanitizer on the threaded tests, built with clang and
+# LLVM's OpenMP runtime, whose Archer tool (libarcher, loaded by libomp
+# through OMPT) tells TSan where OpenMP's barriers and forks order the
+# threads; GCC's libgomp is not instrumented, so TSan sees no order at its
+# barriers and reports races in our loops that cannot happen (tools/tsan.sh)
+LLVM_LIB := /usr/lib/llvm-14/lib
+CC_release := $(CC)
+CC_asan := $(CC)
+CC_tsan := clang
+CFLAGS_tsan := $(WARN) $(OMP) -O1 -g -fno-omit-frame-pointer -fsanitize=thread
+LDFLAGS_tsan := -fsanitize=thread -Wl,-rpath,$(LLVM_LIB)
 LIBS := -lconfig -lm $(OMP)
 # a stage's folder names the libraries its code needs in a file `libs`
 # (src/6-xefg/libs: LAPACKE, for small dense systems); stage N links those
@@ -57,9 +69,9 @@ tests_of = $(sort $(wildcard tests/$(1)-*/test_*.c tests/$(1)-*/scene_*.c) \
              $(foreach d,$(call upto,$(TEST_DIRS),$(1)),$(patsubst %,$(d)/%.c,$(call listed,$(d)/later_stages))) \
              $(foreach d,$(wildcard tests/$(1)-*),$(patsubst %,tests/%.c,$(call listed,$(d)/also))))
 
-# $(1) = release | asan, $(2) = stage number
+# $(1) = release | asan | tsan, $(2) = stage number
 define STAGE_RULES
-B_$(1)_$(2) := build/$(if $(filter asan,$(1)),asan/)stage$(2)
+B_$(1)_$(2) := build/$(if $(filter-out release,$(1)),$(1)/)stage$(2)
 INC_$(1)_$(2) := $$(addprefix -I,$$(call dirs_upto,$(2)))
 OBJ_$(1)_$(2) := $$(patsubst src/%.c,$$(B_$(1)_$(2))/obj/%.o,\
                    $$(foreach d,$$(call dirs_upto,$(2)),$$(wildcard $$(d)/*.c)))
@@ -70,34 +82,35 @@ TESTS_$(1)_$(2) := $$(patsubst tests/%.c,$$(B_$(1)_$(2))/tests/%,$$(UNIT_$(1)_$(
 
 $$(B_$(1)_$(2))/obj/%.o: src/%.c
 	@mkdir -p $$(@D)
-	$$(CC) $$(CFLAGS_$(1)) $$(if $$(filter %/stages.c,$$<),-DMPM_STAGE=$(2)) $$(INC_$(1)_$(2)) -MMD -MP -c $$< -o $$@
+	$$(CC_$(1)) $$(CFLAGS_$(1)) $$(if $$(filter %/stages.c,$$<),-DMPM_STAGE=$(2)) $$(INC_$(1)_$(2)) -MMD -MP -c $$< -o $$@
 
 $$(B_$(1)_$(2))/libmpm.a: $$(filter-out %/main.o,$$(OBJ_$(1)_$(2)))
 	@rm -f $$@
 	ar rcs $$@ $$^
 
 $$(B_$(1)_$(2))/mpm: $$(B_$(1)_$(2))/obj/0-base/main.o $$(B_$(1)_$(2))/libmpm.a
-	$$(CC) $$(LDFLAGS_$(1)) $$^ $$(call stage_libs,$(2)) -o $$@
+	$$(CC_$(1)) $$(LDFLAGS_$(1)) $$^ $$(call stage_libs,$(2)) -o $$@
 
 $$(B_$(1)_$(2))/tests/support/%.o: tests/support/%.c
 	@mkdir -p $$(@D)
-	$$(CC) $$(CFLAGS_$(1)) $$(INC_$(1)_$(2)) -Itests/support -MMD -MP -c $$< -o $$@
+	$$(CC_$(1)) $$(CFLAGS_$(1)) $$(INC_$(1)_$(2)) -Itests/support -MMD -MP -c $$< -o $$@
 
 $$(B_$(1)_$(2))/tests/%.o: tests/%.c
 	@mkdir -p $$(@D)
-	$$(CC) $$(CFLAGS_$(1)) $$(INC_$(1)_$(2)) -Itests/support -MMD -MP -c $$< -o $$@
+	$$(CC_$(1)) $$(CFLAGS_$(1)) $$(INC_$(1)_$(2)) -Itests/support -MMD -MP -c $$< -o $$@
 
 $$(B_$(1)_$(2))/tests/%: $$(B_$(1)_$(2))/tests/%.o $$(SUPPORT_$(1)_$(2)) $$(B_$(1)_$(2))/libmpm.a
-	$$(CC) $$(LDFLAGS_$(1)) $$^ $$(TEST_LIBS) -o $$@
+	$$(CC_$(1)) $$(LDFLAGS_$(1)) $$^ $$(TEST_LIBS) -o $$@
 
 -include $$(OBJ_$(1)_$(2):.o=.d) $$(wildcard $$(B_$(1)_$(2))/tests/*/*.d)
 endef
 
 $(foreach s,$(STAGES),$(eval $(call STAGE_RULES,release,$(s))))
 $(foreach s,$(STAGES),$(eval $(call STAGE_RULES,asan,$(s))))
+$(foreach s,$(STAGES),$(eval $(call STAGE_RULES,tsan,$(s))))
 
 .PHONY: all deps $(addprefix stage,$(STAGES)) check check-release check-asan \
-        check-exercises exercise docs figures bench same-numbers fuzz clean
+        check-exercises exercise docs figures bench same-numbers fuzz tsan clean
 .SECONDARY:
 .PHONY: FORCE
 FORCE:
@@ -210,6 +223,24 @@ check: deps
 
 check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) build/asan/stage$(s)/mpm $(TESTS_asan_$(s))) \
              $(REPLAY) $(EXERCISE_BINS)
+
+# ---- ThreadSanitizer ---------------------------------------------------------
+# make tsan: the tests that run the solver on 1 to 4 threads, solver and
+# test built with clang -fsanitize=thread and LLVM's OpenMP with Archer
+# (build/tsan/, tools/tsan.sh says why not GCC's libgomp), on the stages
+# that add threaded code: stage 1 (the strips), 4 (contact's scatters),
+# 6 (XEFG's Gauss points) and 8 (every feature, the wider stencils and APIC).
+# Not part of make check (it takes minutes: the appendix's threads section).
+TSAN_RUNS := 1:1-mpm/scene_threads 4:1-mpm/scene_threads 6:6-xefg/scene_xefg_threads \
+             8:1-mpm/scene_threads
+tsan_stage = $(firstword $(subst :, ,$(1)))
+tsan_test = build/tsan/stage$(call tsan_stage,$(1))/tests/$(lastword $(subst :, ,$(1)))
+tsan: deps
+	@sh tools/deps.sh fuzz
+	@$(MAKE) --no-print-directory -j$(JOBS) $(foreach r,$(TSAN_RUNS),\
+	    build/tsan/stage$(call tsan_stage,$(r))/mpm $(call tsan_test,$(r)))
+	@JOBS=$(JOBS) LLVM_LIB=$(LLVM_LIB) bash tools/tsan.sh $(foreach r,$(TSAN_RUNS),\
+	    "tsan-stage$(call tsan_stage,$(r)):build/tsan/stage$(call tsan_stage,$(r))/mpm:$(call tsan_test,$(r))")
 
 # ---- book, figures, bench ----------------------------------------------------
 # the chapters show these figures (about thirty-two minutes to draw, and

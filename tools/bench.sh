@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# make bench: speed and memory of the stage-1 solver on one thread, what a
+# make bench: speed and memory of the stage-1 solver on one thread, 2
+# threads against 1 on five scenes of stages 1 to 6 (tools/bench_threads.sh), what a
 # crack costs (stage 2), what the crossing step costs by search (stage 3)
 # and what contact costs (stage 4: crack faces; bodies through contact groups);
 # error against cost (stage 5, a subset of make fig-tradeoff) and, at the
@@ -24,7 +25,8 @@
 #              the spare capacity of arrays grown by doubling.
 #
 # Environment: MPM (default build/stage1/mpm), SCHEMES (default
-# "usl musl usf"), REPEAT (default 5), PIN (e.g. "taskset -c 2"), STEPS50K / STEPS200K (N).
+# "usl musl usf"), REPEAT (default 5), PIN (e.g. "taskset -c 2"), STEPS50K / STEPS200K (N),
+# THREAD_REPEAT (default 3: the threads block's runs of each kind).
 set -u
 cd "$(dirname "$0")/.."
 MPM=${MPM:-build/stage1/mpm}
@@ -158,28 +160,10 @@ for fmt in ascii binary; do
 done
 
 echo
-# threads: the time loop of 200 steps of the 200k disks on 1 and on every
-# core (nproc), the best of REPEAT runs each (so far only the point and
-# stress updates run on threads: chapter 1's appendix)
-cores=$(nproc 2>/dev/null || echo 1)
-printf 'threads, 200 steps of the 200k disks (musl):\n'
-declare -A TLOOP
-for th in 1 "$cores"; do
-    best=""
-    for ((r = 0; r < REPEAT; r++)); do
-        $PIN $MPM tools/bench/disks_200k.cfg -q -o "$WORK/thr" run.update=musl \
-            run.time="$time200" run.threads="$th" >"$WORK/out" 2>"$WORK/err" || break
-        t=$(sed -nE 's/.*steps in ([0-9.]+) s.*/\1/p' "$WORK/out")
-        best=$(awk -v t="$t" -v m="$best" 'BEGIN { print (m == "" || t < m) ? t : m }')
-    done
-    TLOOP[$th]=$best
-    printf '  %2s thread(s): time loop %s s\n' "$th" "${best:-failed}"
-done
-if [ -n "${TLOOP[1]:-}" ] && [ -n "${TLOOP[$cores]:-}" ]; then
-    awk -v a="${TLOOP[1]}" -v b="${TLOOP[$cores]}" -v n="$cores" \
-        'BEGIN { printf "  speed-up on %d threads: %.2f\n", n, a / b }'
-fi
-
+# threads: 2 against 1 on the issue's scenes (stages 1 and 5: the 200k
+# disks; 3: the cracked DCB, indexed; 4: bodies in contact; 6: an XEFG
+# plate), tools/bench_threads.sh (it runs alone too)
+WORK="$WORK" REPEAT="${THREAD_REPEAT:-3}" PIN="$PIN" bash tools/bench_threads.sh
 echo
 r=${RATE[200k.musl]:-}
 printf 'goal: >= %g particle-steps/s on one thread at 200k points; <= %d bytes/point\n' \
