@@ -13,9 +13,10 @@
 
 /// [growth_tip_stress]
 int growth_tip_stress(const Growth *g, const Xefg *x, int c, int end,
-                      double s[3])
+                      double radius, double s[3])
 {
-    double tip[2], dir[2], w = 0.0, r2 = g->radius * g->radius;
+    (void)g;
+    double tip[2], dir[2], w = 0.0, r2 = radius * radius;
     crack_line_tip(&x->crack[c], end, tip, dir);
     s[0] = s[1] = s[2] = 0.0;
     int n = 0;
