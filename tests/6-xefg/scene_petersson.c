@@ -48,7 +48,9 @@
  * from its tip (tests/6-xefg/scenes/petersson_grow.cfg: growth criterion
  * = "tip", direction "hoop", segments of h = 20 mm): the same four bounds
  * (the path now a real check: the crack must come out vertical). With
- * direction = "principal" the second segment turned horizontal (the
+ * direction = "principal" (and a first version of the criterion, the
+ * cohesive point nearest the end only) the second segment turned
+ * horizontal (the
  * averaged stress ahead of a mode-I tip has sigma_xx near sigma_yy) and
  * three of the four failed; with "hoop" all four are met, so none is open.
  * The issue's fifth, the peak within 5 % over three spacings, takes the
