@@ -119,11 +119,11 @@ void growth_free(Growth *g);
  * @brief The stress averaged over the Gauss points within @p radius of
  *        the tip at end @p end of crack @p c and ahead of it (the half
  *        disk its direction points into), weighted by their weights, into
- *        @p s (xx, yy, xy); @p g unused (criterion = "average" passes
- *        Growth::radius). @return the number of points averaged.
+ *        @p s (xx, yy, xy); criterion = "average" passes Growth::radius.
+ *        @return the number of points averaged.
  */
-int growth_tip_stress(const Growth *g, const Xefg *x, int c, int end,
-                      double radius, double s[3]);
+int growth_tip_stress(const Xefg *x, int c, int end, double radius,
+                      double s[3]);
 
 /**
  * @brief When a tip grows under criterion = "tip" (our choice, chapter 6b,

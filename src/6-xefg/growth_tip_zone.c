@@ -30,7 +30,7 @@ double growth_tip_zone(const Growth *g, const Xefg *x, int c, int end,
     if (most >= 0.0)            /* K dmax: f_t where softening begins */
         return L->f_t * most / cohesive_delta0(L);
     double s[3], ahead[2], dir[2];  /* a notch: the Gauss points nearest */
-    if (growth_tip_stress(g, x, c, end, 0.5 * g->h, s) == 0)
+    if (growth_tip_stress(x, c, end, 0.5 * g->h, s) == 0)
         return NAN;
     crack_line_tip(l, end, tip, ahead);
     return growth_criterion(s, ahead, dir);

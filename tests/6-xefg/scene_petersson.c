@@ -137,7 +137,7 @@ static Beam run_beam(Sim *s, const char *what, int diag)
         }
         if (diag && g && x->crack[0].tip[1] && n > 0 && ns % 10 == 0) {
             double st[3], tip[2], ahead[2], dir[2];
-            int m = growth_tip_stress(g, x, 0, 1, g->radius, st);
+            int m = growth_tip_stress(x, 0, 1, g->radius, st);
             crack_line_tip(&x->crack[0], 1, tip, ahead);
             double avg = m ? growth_criterion(st, ahead, dir) : NAN;
             double zone = growth_tip_zone(g, x, 0, 1,
