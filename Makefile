@@ -319,7 +319,7 @@ FIG_USES_fig-xefg-dcb := figures/fig1/dcb_full.cfg tests/support/q4.h \
     $(addprefix figures/fig-tradeoff/,dcb_opening.c dcb_opening.sh dcb_scene.sh)
 FIG_OUT_fig-petersson := fig-petersson.png fig-petersson.txt
 FIG_RUN_fig-petersson := build/stage6/mpm
-FIG_USES_fig-petersson := tests/6-xefg/scenes/petersson.cfg
+FIG_USES_fig-petersson := tests/6-xefg/scenes/petersson.cfg tests/6-xefg/scenes/petersson_grow.cfg
 FIG_OUT_fig-growth := fig-growth.png fig-growth.txt
 FIG_RUN_fig-growth := build/stage7/mpm build/stage7/tests/support/q4.o
 FIG_USES_fig-growth := tests/7-fracture/scenes/kalthoff_half.cfg tests/support/q4.h

@@ -16,6 +16,7 @@
 #include <stddef.h>
 
 #include "cell_list.h"
+#include "cohesive_law.h"
 #include "quadrature.h"
 #include "xefg.h"
 
@@ -26,6 +27,8 @@ typedef struct XefgGrowthSettings {
     int max_segments;  /**< most segments the crack may add (0: the default) */
     int hoop;          /**< direction = "hoop": where by the largest hoop
                             stress of K_I, K_II (0: normal to sigma_1) */
+    int tip;           /**< criterion = "tip": when by the cohesive zone's
+                            own tip (growth_tip_zone(); 0: "average") */
     int line;          /**< line of the group, for messages */
 } XefgGrowthSettings;
 
@@ -113,13 +116,29 @@ int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err,
 void growth_free(Growth *g);
 
 /**
- * @brief The stress averaged over the Gauss points within Growth::radius
- *        of the tip at end @p end of crack @p c and ahead of it (the half
+ * @brief The stress averaged over the Gauss points within @p radius of
+ *        the tip at end @p end of crack @p c and ahead of it (the half
  *        disk its direction points into), weighted by their weights, into
- *        @p s (xx, yy, xy). @return the number of points averaged.
+ *        @p s (xx, yy, xy); criterion = "average" passes Growth::radius.
+ *        @return the number of points averaged.
  */
-int growth_tip_stress(const Growth *g, const Xefg *x, int c, int end,
+int growth_tip_stress(const Xefg *x, int c, int end, double radius,
                       double s[3]);
+
+/**
+ * @brief When a tip grows under criterion = "tip" (our choice, chapter 6b,
+ *        "Petersson's beam"): the value compared with f_t of crack @p c's
+ *        law @p L at end @p end. Where the crack's last segment holds
+ *        cohesive points, K dmax, the largest of them: it reaches f_t when
+ *        the cohesive zone's own tip (where the traction reaches f_t) has
+ *        come into the last segment, so that a closed segment always lies
+ *        ahead of it, as on a pre-inserted ligament; where it holds none
+ *        (a traction-free notch), sigma_1 of the stress averaged over the
+ *        half disk of radius h / 2 ahead of the tip (the Gauss points
+ *        nearest it). @return that value, or NAN when neither has a point.
+ */
+double growth_tip_zone(const Growth *g, const Xefg *x, int c, int end,
+                       const CohesiveLaw *L);
 
 /**
  * @brief The criterion of a tip: from the averaged stress @p s, the value

@@ -12,10 +12,10 @@
 #include "growth.h"
 
 /// [growth_tip_stress]
-int growth_tip_stress(const Growth *g, const Xefg *x, int c, int end,
+int growth_tip_stress(const Xefg *x, int c, int end, double radius,
                       double s[3])
 {
-    double tip[2], dir[2], w = 0.0, r2 = g->radius * g->radius;
+    double tip[2], dir[2], w = 0.0, r2 = radius * radius;
     crack_line_tip(&x->crack[c], end, tip, dir);
     s[0] = s[1] = s[2] = 0.0;
     int n = 0;

@@ -6,7 +6,8 @@
  *        law's group, so a growing crack has a law (growth_build() checks
  *        again at set-up); and where a tip grows, direction = "hoop"
  *        (the default: the largest hoop stress of K_I, K_II) or
- *        "principal" (normal to sigma_1). CRAMP's `cracks.[k].growth` is stage 7's.
+ *        "principal" (normal to sigma_1); and when, criterion = "average"
+ *        (the default) or "tip" (growth_tip_zone()). CRAMP's `cracks.[k].growth` is stage 7's.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -16,7 +17,7 @@
 #include "scene_read.h"
 
 const char *const growth_keys[] = {"length", "max_segments", "direction",
-                                   NULL};
+                                   "criterion", NULL};
 
 static void growth_release(void *state)
 {
@@ -69,14 +70,23 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
         return scene_error(r, s, "growth", "out of memory");
     XefgGrowthSettings *set = &g->set[index];
     double length = 0.0, most = 0.0;
-    const char *direction = "hoop";
-    *set = (XefgGrowthSettings){1, 0.0, 0, 0,
+    const char *direction = "hoop", *criterion = "average";
+    *set = (XefgGrowthSettings){1, 0.0, 0, 0, 0,
                                 (int)config_setting_source_line(s)};
     int has_length = scene_number(r, s, "length", 0, 0.0, &length);
     int has_most = scene_number(r, s, "max_segments", 0, 0.0, &most);
     if (has_length < 0 || has_most < 0 ||
-        scene_string(r, s, "direction", 0, &direction) < 0)
+        scene_string(r, s, "direction", 0, &direction) < 0 ||
+        scene_string(r, s, "criterion", 0, &criterion) < 0)
         return -1;
+    if (strcmp(criterion, "tip") == 0)
+        set->tip = 1;
+    else if (strcmp(criterion, "average") != 0)
+        return scene_error(r, at(s, "criterion"), "criterion", "\"%s\": "
+                           "expected \"average\" (the default: sigma_1 "
+                           "averaged over 1.5 h ahead of the tip) or \"tip\" "
+                           "(the cohesive zone's own tip reaches the last "
+                           "segment)", criterion);
     if (strcmp(direction, "hoop") == 0)
         set->hoop = 1;
     else if (strcmp(direction, "principal") != 0)

@@ -24,10 +24,12 @@ int growth_after_step(Sim *sim, Xefg *x, Growth *g)
             if (!x->crack[k].tip[e])
                 continue;
             double s[3], tip[2], ahead[2], dir[2];
-            if (growth_tip_stress(g, x, k, e, s) == 0)
+            if (growth_tip_stress(x, k, e, g->radius, s) == 0)
                 continue;
             crack_line_tip(&x->crack[k], e, tip, ahead);
             double s1 = growth_criterion(s, ahead, dir), K[2] = {0.0, 0.0};
+            if (g->set[k].tip)                /* when: the cohesive zone's tip */
+                s1 = growth_tip_zone(g, x, k, e, L);
             if (!(s1 >= L->f_t))
                 continue;                            /* when: Rankine */
             if (g->set[k].hoop &&                    /* where: hoop stress */

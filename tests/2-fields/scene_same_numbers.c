@@ -88,6 +88,7 @@ static const char *const elsewhere[][2] = {
     {"tests/6-xefg/scenes/plate_crack.cfg", "run.method = \"xefg\" is stage 6's"},
     {"tests/6-xefg/scenes/cohesive_bar.cfg", "run.method = \"xefg\" and cracks.cohesive are stage 6's"},
     {"tests/6-xefg/scenes/petersson.cfg", "run.method = \"xefg\" and cracks.cohesive are stage 6's"},
+    {"tests/6-xefg/scenes/petersson_grow.cfg", "cracks.cohesive.growth is stage 6's"},
     {"figures/fig-growth/kalthoff_xefg.cfg", "run.method = \"xefg\" and cracks.cohesive are stage 6's"},
     {"tests/6-xefg/scenes/growth_bar.cfg", "cracks.growth is stage 6's"},
     {"tests/6-xefg/scenes/growth_beam.cfg", "cracks.growth is stage 6's"},
