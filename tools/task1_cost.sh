@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # tools/task1_cost.sh MPM SCENE [SEARCH [OVERRIDES]] -> "points whole task1": the
-# instructions per particle-step of the whole step (the time loop, its
+# instructions per particle-step of the whole step (every thread's, the
 # history and snapshots included, the final points file not) and of Task 1 with
 # cracks (cracks_key_fields() and all it calls), from callgrind runs of 30
 # and 10 steps (their difference, so set-up does not count). Deterministic.
@@ -21,12 +21,14 @@ for n in 10 30; do
         -o "$W/run" run.time="$time" ${search:+run.crack_search=$search} $extra \
         >/dev/null 2>"$W/err" || { echo "task1_cost: $scene failed" >&2; exit 1; }
 done
-# the time loop (sim_run) less the final points file: writing that one file
-# costs more when its numbers have more digits (after 30 steps than after
-# 10), which is not a cost of the step (about 80 of ~1,000 on the DCB)
+# every thread's instructions less the final points file: writing that one
+# file costs more when its numbers have more digits (after 30 steps than
+# after 10), which is not a cost of the step (about 80 of ~1,000 on the DCB)
 incl() { callgrind_annotate --inclusive=yes "$1" 2>/dev/null |
          awk -v f=":$2 " 'index($0, f) { gsub(",", "", $1); print $1; exit }'; }
-total() { echo $(( $(incl "$1" sim_run) - $(incl "$1" output_points_final) )); }
+total() { echo $(( $(callgrind_annotate "$1" 2>/dev/null |
+                     sed -nE 's/^ *([0-9,]+) .*PROGRAM TOTALS.*/\1/p' | tr -d ,) -
+                   $(incl "$1" output_points_final) )); }
 task1() { callgrind_annotate --inclusive=yes "$1" 2>/dev/null |
           awk '/cracks_key_fields/ { gsub(",", "", $1); print $1; exit }'; }
 a=$(total "$W/cg.10") b=$(total "$W/cg.30") ta=$(task1 "$W/cg.10") tb=$(task1 "$W/cg.30")
