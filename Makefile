@@ -244,7 +244,7 @@ tsan: deps
 
 # ---- book, figures, bench ----------------------------------------------------
 # the chapters show these figures (about thirty-two minutes to draw, and
-# fig-growth's four to eight more, fig-kalthoff's ten to fifteen, fig-shapes'
+# fig-growth's four to eight more, fig-kalthoff's four, fig-shapes'
 # five, on a shared two-core machine) and
 # include the tables their scripts write (build/figures/*.txt, on doxygen's
 # EXAMPLE_PATH: a missing one is a warning, so an error)
