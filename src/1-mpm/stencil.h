@@ -85,6 +85,24 @@ static inline int stencil_of_point(const Sim *sim, int p, Stencil *st)
     return st->n = STENCIL_NODES;
 }
 
+/// [stencil_velocity_gradient]
+/** @brief The velocity gradient at a point, L_p = sum_i v_i (x) G_ip over
+ *         the first @p n pairs of its stencil @p st (eq. 34), into @p L as
+ *         (du/dx, du/dy, dv/dx, dv/dy). */
+static inline __attribute__((always_inline)) void
+stencil_velocity_gradient(const Grid *g, const Stencil *st, int n, double L[4])
+{
+    L[0] = L[1] = L[2] = L[3] = 0.0;
+    for (int a = 0; a < n; a++) {
+        int s = st->slot[a];
+        L[0] += g->vx[s] * st->Gx[a];
+        L[1] += g->vx[s] * st->Gy[a];
+        L[2] += g->vy[s] * st->Gx[a];
+        L[3] += g->vy[s] * st->Gy[a];
+    }
+}
+/// [stencil_velocity_gradient]
+
 /** @brief The stencil of a position: nodes and shape functions; every
  *         pair in field 0 (crack points, output). */
 static inline void stencil_at(const Grid *g, double x, double y, Stencil *st)

@@ -77,16 +77,10 @@ static inline int strain_point(Sim *sim, int p, const Stencil *st, int n,
 {
     Particles *P = &sim->pts;
     const Grid *g = &sim->grid;
-    double dudx = 0, dudy = 0, dvdx = 0, dvdy = 0;
-    for (int a = 0; a < n; a++) {      /* L_p = sum v_i (x) G_ip */
-        int s = st->slot[a];
-        dudx += g->vx[s] * st->Gx[a];
-        dudy += g->vx[s] * st->Gy[a];
-        dvdx += g->vy[s] * st->Gx[a];
-        dvdy += g->vy[s] * st->Gy[a];
-    }
-    double dexx = dt_star * dudx, deyy = dt_star * dvdy;
-    double dexy = 0.5 * dt_star * (dudy + dvdx);        /* eq. 35 */
+    double L[4];                        /* du/dx, du/dy, dv/dx, dv/dy */
+    stencil_velocity_gradient(g, st, n, L);
+    double dexx = dt_star * L[0], deyy = dt_star * L[3];
+    double dexy = 0.5 * dt_star * (L[1] + L[2]);        /* eq. 35 */
     P->exx[p] += dexx;
     P->eyy[p] += deyy;
     P->exy[p] += dexy;

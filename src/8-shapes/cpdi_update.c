@@ -59,14 +59,8 @@ static int cpdi_update(Sim *sim, void *state, Seam seam)
     for (int p = 0; p < sim->pts.n; p++) {
         Stencil st;
         stencil_wide(sim, cpdi_stencil, p, &st); /* the step's fields */
-        double L[4] = {0, 0, 0, 0};              /* xx, xy, yx, yy */
-        for (int a = 0; a < st.n; a++) {
-            int s = st.slot[a];
-            L[0] += g->vx[s] * st.Gx[a];
-            L[1] += g->vx[s] * st.Gy[a];
-            L[2] += g->vy[s] * st.Gx[a];
-            L[3] += g->vy[s] * st.Gy[a];
-        }
+        double L[4];                             /* xx, xy, yx, yy */
+        stencil_velocity_gradient(g, &st, st.n, L);
         double *F = &C->F[4 * p], dt = sim->dt, f[4];
         f[0] = F[0] + dt * (L[0] * F[0] + L[1] * F[2]);
         f[1] = F[1] + dt * (L[0] * F[1] + L[1] * F[3]);

@@ -177,13 +177,10 @@ static double offset_rate(Sim *sim, double *offset)
     for (int p = 0; p < P->n; p++) {
         Stencil st;
         stencil_of_point(sim, p, &st);
-        double L[4] = {0, 0, 0, 0}, M[4] = {0, 0, 0, 0};
+        double L[4], M[4] = {0, 0, 0, 0};
+        stencil_velocity_gradient(g, &st, st.n, L);
         for (int a = 0; a < st.n; a++) {
             int s = st.slot[a];
-            L[0] += g->vx[s] * st.Gx[a];
-            L[1] += g->vx[s] * st.Gy[a];
-            L[2] += g->vy[s] * st.Gx[a];
-            L[3] += g->vy[s] * st.Gy[a];
             M[0] += -W * by[s] * st.Gx[a];      /* Omega (xbar - x) G^T */
             M[1] += -W * by[s] * st.Gy[a];
             M[2] += W * bx[s] * st.Gx[a];
@@ -207,14 +204,8 @@ static double spurious_rate(Sim *sim, double *median)
     for (int p = 0; p < P->n; p++) {
         Stencil st;
         stencil_of_point(sim, p, &st);
-        double L[4] = {0, 0, 0, 0};
-        for (int a = 0; a < st.n; a++) {
-            int s = st.slot[a];
-            L[0] += g->vx[s] * st.Gx[a];
-            L[1] += g->vx[s] * st.Gy[a];
-            L[2] += g->vy[s] * st.Gx[a];
-            L[3] += g->vy[s] * st.Gy[a];
-        }
+        double L[4];
+        stencil_velocity_gradient(g, &st, st.n, L);
         double exy = 0.5 * (L[1] + L[2]);
         r[p] = sqrt(L[0] * L[0] + L[3] * L[3] + 2.0 * exy * exy) / W;
         top = fmax(top, r[p]);
