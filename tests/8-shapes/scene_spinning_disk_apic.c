@@ -60,26 +60,17 @@ static int one_turn(const char *shape, const char *transfer, Spin *end,
     snprintf(s, sizeof s, "run.shape=%s", shape);
     snprintf(t, sizeof t, "run.transfer=%s", transfer);
     const char *const over[] = {s, t, NULL};
-    Sim *sim = tk_load_file("tests/1-mpm/scenes/spinning_disk.cfg", over);
-    Spin start = measure(sim);
-    long k = 0;
-    int rc = 0;
-    while (k < sim->nsteps && (rc = sim_advance(sim)) == 0)
-        k++;
-    if (rc == 0) {
-        *end = measure(sim);
-        ratio->ke = end->ke / start.ke;
-        ratio->lz = end->lz / start.lz;
+    long k[2];
+    Failure f;
+    int rc = spin_turn(over, measure, end, ratio, k, &f);
+    if (rc == 0)
         printf("  %-6s %-4s %ld steps: kinetic energy %.5f of its start, angular "
                "momentum %.15f; von Mises / rho v^2: median %.3f, largest %.3f\n",
-               shape, transfer, k, ratio->ke, ratio->lz, end->vm_median,
+               shape, transfer, k[0], ratio->ke, ratio->lz, end->vm_median,
                end->vm_max);
-    } else {
+    else
         printf("  %-6s %-4s stopped at step %ld of %ld (%s of point %d)\n", shape,
-               transfer, sim->fail.step, sim->nsteps, sim->fail.quantity,
-               sim->fail.particle);
-    }
-    tk_free(sim);
+               transfer, f.step, k[1], f.quantity, f.particle);
     return rc;
 }
 

@@ -69,25 +69,16 @@ static int usl_completes(const char *shape, const char *cells, const char *size,
     char opt[64];
     snprintf(opt, sizeof opt, "run.shape=%s", shape);
     const char *const over[] = {opt, "run.update=usl", cells, size, NULL};
-    Sim *sim = tk_load_file("tests/1-mpm/scenes/spinning_disk.cfg", over);
-    Spin start = spin_measure(sim);
-    long k = 0;
-    int rc = 0;
-    while (k < sim->nsteps && (rc = sim_advance(sim)) == 0)
-        k++;
-    if (rc == 0) {
-        *end = spin_measure(sim);
-        ratio->ke = end->ke / start.ke;
-        ratio->lz = end->lz / start.lz;
+    long k[2];
+    Failure f;
+    int rc = spin_turn(over, spin_measure, end, ratio, k, &f);
+    if (rc == 0)
         printf("  %-6s usl:  %ld steps: kinetic energy %.5f, angular momentum "
                "%.5f; von Mises / rho v^2: median %.3f, largest %.3f\n", shape,
-               k, ratio->ke, ratio->lz, end->vm_median, end->vm_max);
-    } else {
+               k[0], ratio->ke, ratio->lz, end->vm_median, end->vm_max);
+    else
         printf("  %-6s usl:  unstable at step %ld of %ld (%s of point %d)\n",
-               shape, sim->fail.step, sim->nsteps, sim->fail.quantity,
-               sim->fail.particle);
-    }
-    tk_free(sim);
+               shape, f.step, k[1], f.quantity, f.particle);
     return rc == 0;
 }
 

@@ -52,4 +52,31 @@ static inline Spin spin_measure(const Sim *sim)
     return s;
 }
 
+/** The disk with the overrides @p over run to its end, step by step, with
+ *  @p measure (spin_measure() or a stage's own): the end in *@p end and
+ *  the ratios to the start in *@p ratio when it ran through; the steps
+ *  taken and the run's steps in @p steps, and the sim's failure record
+ *  (filled when a step failed) in *@p fail. @return 0, or the step's
+ *  non-zero status. */
+static inline int spin_turn(const char *const over[], Spin (*measure)(const Sim *),
+                            Spin *end, Spin *ratio, long steps[2], Failure *fail)
+{
+    Sim *sim = tk_load_file("tests/1-mpm/scenes/spinning_disk.cfg", over);
+    Spin start = measure(sim);
+    long k = 0;
+    int rc = 0;
+    while (k < sim->nsteps && (rc = sim_advance(sim)) == 0)
+        k++;
+    if (rc == 0) {
+        *end = measure(sim);
+        ratio->ke = end->ke / start.ke;
+        ratio->lz = end->lz / start.lz;
+    }
+    steps[0] = k;
+    steps[1] = sim->nsteps;
+    *fail = sim->fail;
+    tk_free(sim);
+    return rc;
+}
+
 #endif
