@@ -51,6 +51,10 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
     }
     if (scene_read(sim, cfg, &r))
         return -1;
+    /* the scene's threads win over OMP_NUM_THREADS (OpenMP's default);
+       known before the stages prepare, which may size for them */
+    sim->threads = sim->scene.run.threads ? sim->scene.run.threads
+                                          : omp_get_max_threads();
     const config_setting_t *grid = config_lookup(cfg, "grid");
     if (footprint_check(&sim->scene, sim->memory_limit,
                         grid ? (int)config_setting_source_line(grid) : 0, err, errlen))
@@ -65,9 +69,6 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
         snprintf(err, errlen, "%s: out of memory", name);
         return -1;
     }
-    /* the scene's threads win over OMP_NUM_THREADS (OpenMP's default) */
-    sim->threads = sim->scene.run.threads ? sim->scene.run.threads
-                                          : omp_get_max_threads();
     if (strips_init(sim)) {           /* who writes which nodes (strips.h) */
         snprintf(err, errlen, "%s: out of memory for the threads' strips", name);
         return -1;

@@ -129,6 +129,7 @@ int growth_insert(Sim *sim, Xefg *x, Growth *g, int c, int end, double px,
         return -1;
     }
     double a[2], dir[2], b[2] = {px, py};
+    x->rows_version++;                       /* the gather is stale */
     crack_line_tip(l, end, a, dir);
     if (end == 1) {                          /* the line, one point longer */
         ck->x[ck->n] = px;

@@ -19,6 +19,7 @@
 
 struct Cohesive;
 struct Growth;
+struct XefgGather;
 
 /** The scene's `xefg` section. */
 typedef struct XefgSettings {
@@ -108,6 +109,9 @@ typedef struct Xefg {
     int power_iterations; /**< iterations it took */
     struct Cohesive *coh; /**< cohesive cracks (cohesive.h; NULL: none) */
     struct Growth *grow;  /**< cracks that grow (growth.h; NULL: none) */
+    long rows_version;  /**< counts the changes of the Gauss rows */
+    struct XefgGather *gather; /**< the rows by parameter, for threads
+                                    (xefg_gather.h; NULL: one thread) */
     double w_held;      /**< work of the held places so far (counted when
                              a crack is cohesive) */
     double e0;          /**< kinetic + strain energy at the start */

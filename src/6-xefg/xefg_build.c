@@ -15,6 +15,7 @@
 #include "growth.h"
 #include "quadrature.h"
 #include "xefg.h"
+#include "xefg_gather.h"
 
 /** "file:line" of a scene line into @p at. */
 static const char *line_at(const Sim *sim, int line, char *at)
@@ -403,6 +404,8 @@ int xefg_build(Xefg *x, const Sim *sim, char *err, size_t errlen)
     if ((x->grow = growth_of(sim)) &&               /* room to grow */
         growth_build(x->grow, x, sim, err, errlen))
         goto done;
+    if (xefg_gather_build(x, sim))                  /* sums on threads */
+        goto oom;
     if (xefg_power_iteration(x, sim)) {
         snprintf(err, errlen, "%s: the power iteration for the stable time "
                  "step gave no finite frequency (highest %g)", sim->scene.file,
@@ -433,6 +436,7 @@ void xefg_free(Xefg *x)
         free(arrays[k]);
     shape_rows_free(&x->gauss);
     shape_rows_free(&x->at_node);
+    xefg_gather_free(x->gather);
     for (int k = 0; k < 2; k++) {
         Constraints *c = &x->fix[k];
         free(c->node);

@@ -8,6 +8,7 @@
 
 #include "cohesive.h"
 #include "xefg.h"
+#include "xefg_gather.h"
 
 /// [xefg_gauss_point]
 /** Gauss point @p g: its strain increment from the parameters' increments
@@ -74,9 +75,13 @@ void xefg_update_and_force(const Xefg *x, const Sim *sim, const double *du,
                            double *f)
 {
     xefg_strain_update(x, sim, du, x->gs, x->ge);   /* on the threads */
-    memset(f, 0, 2 * sizeof(double) * (size_t)x->ndof);
-    for (int g = 0; g < x->ngauss; g++)           /* in order: the same sums */
-        gauss_scatter(&x->gauss, g, x->gw[g], x->gs + 3 * g, f);
+    if (xefg_gather_current(x)) {                   /* the same sums, turned */
+        xefg_gather_force(x, sim, f);
+    } else {
+        memset(f, 0, 2 * sizeof(double) * (size_t)x->ndof);
+        for (int g = 0; g < x->ngauss; g++)         /* in order */
+            gauss_scatter(&x->gauss, g, x->gw[g], x->gs + 3 * g, f);
+    }
     if (x->coh)                                     /* the crack's tractions */
         cohesive_force(x->coh, x->u, f, 1);
 }
@@ -107,6 +112,8 @@ void xefg_to_points(const Xefg *x, Sim *sim)
 {
     Particles *P = &sim->pts;
     const ShapeRows *R = &x->at_node;
+    int gather = xefg_gather_current(x);
+#pragma omp parallel for if (gather) num_threads(sim->threads) schedule(static)
     for (int I = 0; I < x->nnode; I++) {
         double ux = 0.0, uy = 0.0, vx = 0.0, vy = 0.0;
         for (int e = R->start[I]; e < R->start[I + 1]; e++) {
@@ -122,6 +129,10 @@ void xefg_to_points(const Xefg *x, Sim *sim)
         P->vy[I] = vy;
         P->sxx[I] = P->syy[I] = P->sxy[I] = 0.0;
         P->exx[I] = P->eyy[I] = P->exy[I] = 0.0;
+    }
+    if (gather) {                                   /* cell averages, turned */
+        xefg_gather_cells(x, sim);
+        return;
     }
     for (int g = 0; g < x->ngauss; g++) {          /* cell averages */
         int I = x->gnode[g];

@@ -12,6 +12,7 @@
 #include "growth.h"
 #include "step.h"
 #include "xefg.h"
+#include "xefg_gather.h"
 
 /** External forces at time @p t: the scene's point loads through the
  *  loaded nodes' rows, and gravity through int rho psi dV. */
@@ -121,6 +122,7 @@ int xefg_step(Sim *sim)
     sim->step++;
     if (x->grow && growth_after_step(sim, x, x->grow))  /* tips that grow */
         return -1;
+    xefg_gather_refresh(x);                         /* rows that changed */
     return 0;
 }
 /// [xefg_step]
