@@ -144,3 +144,14 @@ for c in "${cases[@]}"; do
             (m2 > 0 && m0 > 0 ? sprintf("%.0f", (m2 - m0) * 1024 / p) : "-"),
             (loaded ? "(loaded)" : (a / b >= g ? "goal " g " met" : "below " g)) }'
 done
+
+# what the code allows, whatever the load: each thread's instructions on two
+# threads against one thread's (callgrind), for the XEFG plate and the
+# touching disks (contact's node loops are still on one thread)
+printf 'instructions a step (tools/thread_split.sh; bound = 1 thread / the larger share):\n'
+for c in "${cases[@]}"; do
+    IFS='|' read -r label mpm scene extra _ <<<"$c"
+    case $label in xefg*|*touching) ;; *) continue ;; esac
+    [ -x "$mpm" ] || continue
+    printf '%-19s %s\n' "$label" "$(bash tools/thread_split.sh "$mpm" "$scene" "$extra" 2>&1)"
+done

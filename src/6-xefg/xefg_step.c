@@ -41,18 +41,32 @@ static void external_force(const Xefg *x, const Sim *sim, double t, double *f)
     }
 }
 
-/** The first parameter (lowest node) whose velocity or displacement is not
- *  finite, or of a Gauss point whose stress is not. @return 0 or -1. */
+/** The first parameter (lowest index) whose velocity is not finite, or
+ *  else the first Gauss point whose stress is not (on the threads when
+ *  the sums are: the lowest index, whichever thread met it).
+ *  @return 0 or -1. */
 static int check_finite(const Xefg *x, Sim *sim)
 {
+    int qbad = x->ndof, gbad = x->ngauss;
+#pragma omp parallel for if (x->gather) num_threads(sim->threads) \
+    schedule(static) reduction(min : qbad)
     for (int q = 0; q < x->ndof; q++)
         if (!isfinite(x->v[2 * q]) || !isfinite(x->v[2 * q + 1]))
-            return step_fail(sim, x->dof_node[q], "velocity",
-                             isfinite(x->v[2 * q]) ? x->v[2 * q + 1] : x->v[2 * q]);
+            qbad = q < qbad ? q : qbad;
+    if (qbad < x->ndof) {
+        const double *v = x->v + 2 * qbad;
+        return step_fail(sim, x->dof_node[qbad], "velocity",
+                         isfinite(v[0]) ? v[1] : v[0]);
+    }
+#pragma omp parallel for if (x->gather) num_threads(sim->threads) \
+    schedule(static) reduction(min : gbad)
     for (int g = 0; g < x->ngauss; g++)
         for (int k = 0; k < 3; k++)
             if (!isfinite(x->gs[3 * g + k]))
-                return step_fail(sim, x->gnode[g], "stress", x->gs[3 * g + k]);
+                gbad = g < gbad ? g : gbad;
+    for (int k = 0; gbad < x->ngauss && k < 3; k++)
+        if (!isfinite(x->gs[3 * gbad + k]))
+            return step_fail(sim, x->gnode[gbad], "stress", x->gs[3 * gbad + k]);
     return 0;
 }
 
@@ -99,17 +113,20 @@ int xefg_step(Sim *sim)
 {
     Xefg *x = xefg_of(sim);
     double dt = sim->dt, kappa = sim->scene.run.damping;
-    double *v = x->v, *a = x->a, *du = x->f;
+    double *v = x->v, *a = x->a, *du = x->f;    /* each k its own: threads */
     int n2 = 2 * x->ndof;
+#pragma omp parallel for if (x->gather) num_threads(sim->threads) schedule(static)
     for (int k = 0; k < n2; k++)                    /* v(t + dt/2) */
         v[k] += 0.5 * dt * (a[k] - kappa * v[k]);
     xefg_constraints_apply(x, sim->t + 0.5 * dt);   /* held velocities */
+#pragma omp parallel for if (x->gather) num_threads(sim->threads) schedule(static)
     for (int k = 0; k < n2; k++) {                  /* u(t + dt) */
         du[k] = dt * v[k];
         x->u[k] += du[k];
     }
     xefg_update_and_force(x, sim, du, a);           /* sigma, f_int */
     xefg_accelerations_from(x, sim, sim->t + dt);   /* a(t + dt) */
+#pragma omp parallel for if (x->gather) num_threads(sim->threads) schedule(static)
     for (int k = 0; k < n2; k++)                    /* v(t + dt) */
         v[k] += 0.5 * dt * (a[k] - kappa * v[k]);
     xefg_constraints_apply(x, sim->t + dt);
