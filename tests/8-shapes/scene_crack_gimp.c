@@ -33,11 +33,13 @@
  *   is the points' motion, not round-off: the first ligament point at
  *   (50.49, 0.5) moves 2.9e-3 mm down by step 110 and weights its row
  *   below 1.6e-6 (CPDI 2.8e-4); the test prints the last step's largest
- *   such weight. A mirror condition on the half beam's grid (not done)
- *   would close it; clamping the weight would break partition of unity.
+ *   such weight. What the half run lacks is a mirror condition (not
+ *   done; near the tip, where the full run's pairs to the row below
+ *   either cross the crack or pass the tip, not tried); clamping the
+ *   weight would break partition of unity.
  *
  * Both run 20 ms of the figure's 400 (177 steps); CRACK_GIMP_TIME (ms)
- * sets another time (the OPEN numbers in chapter 8 are at 400 ms).
+ * sets another time (the OPEN numbers in chapter 8 are at 20 ms).
  */
 #include <stdio.h>
 #include <stdlib.h>
