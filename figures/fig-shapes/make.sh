@@ -30,7 +30,8 @@
 #     with the solver's message and left off.
 #
 # Writes build/figures/fig-shapes.png and fig-shapes.txt; runs under
-# build/fig-shapes/.  About 7 minutes on one core.
+# build/fig-shapes/.  11 minutes of wall time on two cores shared at a
+# load of 19 (panels c and d: their loops 2.9, 8.3, 18.9 and 4.5 s).
 #
 # Environment: MPM (default build/stage8/mpm), BAR_CELLS (default
 # "8 16 32 64 128 256 512"), DISK_RUNS ("shape:transfer:update ..."),
