@@ -324,9 +324,11 @@ FIG_OUT_fig-growth := fig-growth.png fig-growth.txt
 FIG_RUN_fig-growth := build/stage7/mpm build/stage7/tests/support/q4.o
 FIG_USES_fig-growth := tests/7-fracture/scenes/kalthoff_half.cfg tests/support/q4.h
 FIG_OUT_fig-shapes := fig-shapes.png fig-shapes.txt
-FIG_RUN_fig-shapes := build/stage8/mpm build/stage8/tests/8-shapes/scene_bar_crossing
+FIG_RUN_fig-shapes := build/stage8/mpm build/stage8/tests/8-shapes/scene_bar_crossing \
+    build/stage8/libmpm.a build/stage8/tests/support/q4.o
 FIG_USES_fig-shapes := tests/8-shapes/scenes/bar_crossing.cfg tests/1-mpm/scenes/spinning_disk.cfg \
-    tools/task1_cost.sh
+    tools/task1_cost.sh figures/fig1/dcb_full.cfg figures/fig6/beam_supports.cfg tests/support/q4.h \
+    $(addprefix figures/fig-tradeoff/,dcb_opening.c dcb_opening.sh dcb_scene.sh)
 FIG_OUT_fig-kalthoff := fig-kalthoff.png fig-kalthoff.txt
 FIG_RUN_fig-kalthoff := build/stage6/mpm
 FIG_USES_fig-kalthoff := figures/fig-growth/kalthoff_xefg.cfg \

@@ -5,7 +5,8 @@
 # and what contact costs (stage 4: crack faces; bodies through contact groups);
 # error against cost (stage 5, a subset of make fig-tradeoff) and, at the
 # end, CRAMP against XEFG on the DCB (stage 6, tools/bench_xefg_dcb.sh) and
-# what the J-integral and growth cost (stage 7, tools/bench_growth.sh).
+# what the J-integral and growth cost (stage 7, tools/bench_growth.sh) and
+# what the shape functions cost (stage 8, tools/bench_shapes.sh).
 #
 # Speed: particle-steps per second on the two Sulsky disks refined to about
 # 50,000 and 200,000 points (tools/bench/disks_*.cfg).  Each case runs N
@@ -397,4 +398,12 @@ S7=build/stage7/mpm
 if [ -x "$S7" ]; then
     echo
     MPM=$S7 WORK="$WORK" REPEAT="$REPEAT" bash tools/bench_growth.sh
+fi
+
+# ---- stage 8: what the shape functions cost ----------------------------------
+# tools/bench_shapes.sh (it runs alone too).
+S8=build/stage8/mpm
+if [ -x "$S8" ]; then
+    echo
+    MPM=$S8 bash tools/bench_shapes.sh
 fi

@@ -17,12 +17,25 @@
 #     deterministic), for each shape with the paper's transfer and with
 #     APIC, and uGIMP and CPDI with USL.  A run that stops is listed and
 #     left off the plot.
+# (c) fig-tradeoff's DCB (figures/fig1/dcb_full.cfg on its h = 2 mm grid,
+#     figures/fig-tradeoff/dcb_scene.sh 51 2, 2 points per cell, musl, cfl
+#     0.5, damped to the static state at 400 ms) and (d) fig-tradeoff's
+#     beam impact (figures/fig6/beam_supports.cfg, musl, cfl 0.5, to 2 ms),
+#     each with linear, uGIMP and CPDI: fig-tradeoff's errors (the opening
+#     against the converged Q4 FEA, figures/fig-tradeoff/dcb_opening.c;
+#     max |E/E0 - 1| over the run) against the instructions per
+#     particle-step of the same run (tools/task1_cost.sh).  The linear runs
+#     are fig-tradeoff's "h=2 ppc=2" and "musl 0.5" points.  A shape the
+#     scene refuses (contact with uGIMP or CPDI is not done) is listed
+#     with the solver's message and left off.
 #
 # Writes build/figures/fig-shapes.png and fig-shapes.txt; runs under
-# build/fig-shapes/.  About 5 minutes on one core.
+# build/fig-shapes/.  11 minutes of wall time on two cores shared at a
+# load of 19 (panels c and d: their loops 2.9, 8.3, 18.9 and 4.5 s).
 #
 # Environment: MPM (default build/stage8/mpm), BAR_CELLS (default
-# "8 16 32 64 128 256 512"), DISK_RUNS ("shape:transfer:update ...").
+# "8 16 32 64 128 256 512"), DISK_RUNS ("shape:transfer:update ..."),
+# SHAPES (panels c and d; default "linear gimp cpdi").
 . "$(dirname "$0")/../lib.sh"
 set -o pipefail
 BAR_CELLS=${BAR_CELLS:-"8 16 32 64 128 256 512"}
@@ -30,6 +43,8 @@ DISK_RUNS=${DISK_RUNS:-"linear:flip:musl gimp:flip:musl cpdi:flip:musl linear:ap
 TEST=build/stage8/tests/8-shapes/scene_bar_crossing
 RUNS=build/fig-shapes
 DISK=tests/1-mpm/scenes/spinning_disk.cfg
+SHAPES=${SHAPES:-"linear gimp cpdi"}
+BEAM=figures/fig6/beam_supports.cfg
 txt=$OUT/fig-shapes.txt
 mkdir -p "$RUNS"
 fig_mpm 8
@@ -74,6 +89,55 @@ for r in $DISK_RUNS; do
     echo "fig-shapes: disk $shape $transfer $update: $ips instructions per particle-step, largest von Mises $vmmax rho v^2"
 done
 
+# ---- (c) the DCB and (d) the beam: fig-tradeoff's errors --------------------
+FEA=$RUNS/dcb_opening
+bash figures/fig-tradeoff/dcb_opening.sh 8 "$FEA" || exit 1
+bash figures/fig-tradeoff/dcb_scene.sh 51 2 >"$RUNS/dcb_51.cfg" || exit 1
+# refused DIR: the solver's first message (a scene it refuses: exit 1)
+refused() { grep -m 1 'mpm: ' "$1.log" | sed 's/^mpm: [^:]*: //'; }
+dcbdat=$RUNS/dcb.dat beamdat=$RUNS/beam.dat
+: >"$dcbdat"
+: >"$beamdat"
+crows=() drows=() beamoff=()
+for shape in $SHAPES; do
+    over="run.shape=$shape run.threads=1"
+    # shellcheck disable=SC2086 # over splits into its items
+    fig_try "$RUNS/dcb-$shape" "$RUNS/dcb_51.cfg" run.snapshots=0 $over
+    if [ "$rc" = 0 ]; then
+        # shellcheck disable=SC2086
+        read -r pts _ _ om _ _ _ _ ref err < <("$FEA" "$RUNS/dcb_51.cfg" "$RUNS/dcb-$shape" 1 $over) || exit 1
+        ae=$(awk -v e="$err" 'BEGIN { printf "%.4e", e < 0 ? -e : e }')
+        read -r _ ips _ < <(bash tools/task1_cost.sh "$MPM" "$RUNS/dcb_51.cfg" '' "$over") || exit 1
+        echo "$shape,$ips,$ae" >>"$dcbdat"
+        crows+=("$(printf '%-6s %6s %6s %8s %9s %9s %10s %7s' "$shape" "$pts" "$steps" "$ips" "$om" \
+            "$(printf '%.5f' "$ref")" "$ae" "$loop")")
+        echo "fig-shapes: dcb $shape: opening $om, FEA $ref, error $ae, $ips instructions per particle-step"
+    else
+        [ "$rc" = 1 ] || [ "$rc" = 3 ] || fig_failed "$RUNS/dcb-$shape"
+        crows+=("$(printf '%-6s  %s' "$shape" "${why:-refused: $(refused "$RUNS/dcb-$shape")}")")
+        echo "fig-shapes: dcb $shape: ${why:-refused}"
+    fi
+    over="run.shape=$shape run.threads=1 run.update=musl run.cfl=0.5"
+    # shellcheck disable=SC2086
+    fig_try "$RUNS/beam-$shape" "$BEAM" run.snapshots=0 run.time=2.0 $over
+    if [ "$rc" = 0 ]; then
+        # fig-tradeoff's measure: max |E/E0 - 1| of history.csv's total
+        err=$(awk -F, 'NR == 1 { for (k = 1; k <= NF; k++) c[$k] = k; next }
+            NR == 2 { e0 = $c["total"] }
+            { d = $c["total"] / e0 - 1; if (d < 0) d = -d; if (d > m) m = d }
+            END { printf "%.4e", m }' "$RUNS/beam-$shape/history.csv")
+        read -r pts ips _ < <(bash tools/task1_cost.sh "$MPM" "$BEAM" '' "$over") || exit 1
+        echo "$shape,$ips,$err" >>"$beamdat"
+        drows+=("$(printf '%-6s %6s %6s %8s %10s %7s' "$shape" "$pts" "$steps" "$ips" "$err" "$loop")")
+        echo "fig-shapes: beam $shape: energy error $err, $ips instructions per particle-step"
+    else
+        [ "$rc" = 1 ] || [ "$rc" = 3 ] || fig_failed "$RUNS/beam-$shape"
+        drows+=("$(printf '%-6s  %s' "$shape" "${why:-refused: $(refused "$RUNS/beam-$shape")}")")
+        echo "fig-shapes: beam $shape: ${why:-refused}"
+        beamoff+=("$shape: ${why:-refused (exit 1)}")
+    fi
+done
+
 {
     echo "# make fig-shapes ($(date -u +%Y-%m-%d), $(fig_cpu), load $(fig_load))"
     echo "# (a) the flying bar (tests/8-shapes/scene_bar_crossing.c, MPM_BAR_CELLS=\"$BAR_CELLS\"):"
@@ -84,8 +148,21 @@ done
     echo "#     the turn (largest, median), the time loop (s, on this machine, shared)"
     printf '%-6s %-5s %-5s %10s %8s %8s %7s\n' shape trans. upd. instr/ps largest median loop_s
     printf '%s\n' "${rows[@]}"
+    echo "# (c) fig-tradeoff's DCB, h = 2 mm, 2 points per cell (figures/fig-tradeoff/dcb_scene.sh 51 2,"
+    echo "#     musl, cfl 0.5, 400 ms): the opening at the load against the converged Q4 FEA"
+    echo "#     (figures/fig-tradeoff/dcb_opening.c, meshes 1, 0.5, 0.25 mm, extrapolated)"
+    printf '%-6s %6s %6s %8s %9s %9s %10s %7s\n' shape points steps instr/ps "open mm" "FEA mm" \
+        "|err|" loop_s
+    printf '%s\n' "${crows[@]}"
+    echo "# (d) fig-tradeoff's beam impact ($BEAM, musl, cfl 0.5, to 2 ms):"
+    echo "#     max |E/E0 - 1| over the run"
+    printf '%-6s %6s %6s %8s %10s %7s\n' shape points steps instr/ps "|E/E0-1|" loop_s
+    printf '%s\n' "${drows[@]}"
 } | tee "$txt"
 
 fig_need_gnuplot "$txt written, no plot"
-gnuplot -e "bar='$RUNS/bar.dat'; disk='$disk'; out='$OUT/fig-shapes.png'" figures/fig-shapes/plot.gp || exit 1
+beamnote=${beamoff[*]:+left off: $(printf '%s; ' "${beamoff[@]}" | sed 's/; $//')}
+gnuplot -e "bar='$RUNS/bar.dat'; disk='$disk'; dcb='$dcbdat'; beam='$beamdat'; beamnote='$beamnote'; \
+            out='$OUT/fig-shapes.png'" \
+    figures/fig-shapes/plot.gp || exit 1
 echo "fig-shapes: wrote $OUT/fig-shapes.png and $txt"
