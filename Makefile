@@ -248,7 +248,7 @@ tsan: deps
 # five, on a shared two-core machine) and
 # include the tables their scripts write (build/figures/*.txt, on doxygen's
 # EXAMPLE_PATH: a missing one is a warning, so an error)
-DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-petersson fig-slide fig-growth fig-kalthoff fig-shapes,$(notdir $(wildcard figures/fig*)))
+DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-petersson fig-slide fig-bars fig-growth fig-kalthoff fig-shapes,$(notdir $(wildcard figures/fig*)))
 # MathJax is copied into the book (not linked), so that it can be moved or
 # served as it is; its sources (unpacked), tests and combined configurations
 # are left out
@@ -308,6 +308,9 @@ FIG_USES_fig-tip := $(wildcard tests/3-crossing/scenes/tip_*.cfg)
 FIG_OUT_fig-tradeoff := fig-tradeoff-beam.png fig-tradeoff-dcb.png fig-tradeoff.txt
 FIG_RUN_fig-tradeoff := build/stage5/mpm build/stage5/libmpm.a build/stage5/tests/support/q4.o
 FIG_USES_fig-tradeoff := figures/fig6/beam_supports.cfg figures/fig1/dcb_full.cfg tests/support/q4.h
+FIG_OUT_fig-bars := fig-bars.png fig-bars.txt
+FIG_RUN_fig-bars := build/stage5/mpm build/stage5/tests/4-contact/scene_bars
+FIG_USES_fig-bars := tests/4-contact/scenes/bars_gap.cfg tests/4-contact/scenes/bars_one_field.cfg
 FIG_OUT_fig-slide := fig-slide.png fig-slide.txt
 FIG_RUN_fig-slide := build/stage4/mpm build/stage4/tests/4-contact/scene_slide
 FIG_USES_fig-slide := tests/4-contact/scenes/slide.cfg
