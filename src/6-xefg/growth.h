@@ -29,6 +29,8 @@ typedef struct XefgGrowthSettings {
                             stress of K_I, K_II (0: normal to sigma_1) */
     int tip;           /**< criterion = "tip": when by the cohesive zone's
                             own tip (growth_tip_zone(); 0: "average") */
+    double max_speed;  /**< a tip grows again only length / max_speed
+                            after its last event (0: no limit) */
     int line;          /**< line of the group, for messages */
 } XefgGrowthSettings;
 
@@ -67,6 +69,8 @@ typedef struct Growth {
     int event_cap;           /**< room for events */
     GrowthEvent *event;      /**< the events */
     int power_runs;          /**< power iterations run after set-up */
+    long waits;              /**< steps a tip met its criterion but waited
+                                  for its max_speed */
     char msg[480];           /**< the message that stops a run */
     /* scratch, sized at set-up */
     int *add;                /**< per node: parameters it gains */
@@ -182,6 +186,18 @@ int growth_after_step(Sim *sim, Xefg *x, Growth *g);
  */
 int growth_insert(Sim *sim, Xefg *x, Growth *g, int c, int end, double px,
                   double py, char *err, size_t errlen);
+
+/**
+ * @brief Does the new segment from @p a (the tip at end @p end of crack
+ *        @p c) to @p b meet a crack: another crack's line, or its own away
+ *        from the segment it continues, within 1e-9 @p h (touching or
+ *        crossing)? @return the crack it meets, its segment in @p seg, or
+ *        -1. Two cracks meeting would need Rabczuk and Zi's junction
+ *        enrichment (their eq. 10), which XEFG here lacks: the caller
+ *        stops the run (growth_after_step()).
+ */
+int growth_meets(const Xefg *x, double h, int c, int end, const double a[2],
+                 const double b[2], int *seg);
 
 /** Room one more row must find in reserved rows (entries). */
 #define ROW_ROOM 2048

@@ -1,7 +1,7 @@
 /**
  * @file growth_output.c
  * @brief What growth adds to a run's outputs: a history column and the
- *        events in the report (the path itself is stage 2's crack, which
+ *        events in the report (and, with max_speed, the steps waited) (the path itself is stage 2's crack, which
  *        the cracks_NNNNN series writes point by point).
  */
 #include <stdio.h>
@@ -43,6 +43,12 @@ static int growth_report(const Sim *sim, void *state, FILE *f)
                     "set-up)\n", x->crack[k].tip[0] || x->crack[k].tip[1] ?
                     "tips inside" : "through the body", x->stable_step, tu,
                     g->power_runs) < 0)
+            return -1;
+        if (g->set[k].max_speed > 0.0 &&
+            fprintf(f, "mpm: growth: crack %d: max_speed %g %s/%s; steps a "
+                    "tip (of any crack) waited for its max_speed: %ld\n", k,
+                    g->set[k].max_speed, sim->scene.run.units->length, tu,
+                    g->waits) < 0)
             return -1;
     }
     return 0;

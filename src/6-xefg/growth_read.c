@@ -7,7 +7,8 @@
  *        again at set-up); and where a tip grows, direction = "hoop"
  *        (the default: the largest hoop stress of K_I, K_II) or
  *        "principal" (normal to sigma_1); and when, criterion = "average"
- *        (the default) or "tip" (growth_tip_zone()). CRAMP's `cracks.[k].growth` is stage 7's.
+ *        (the default) or "tip" (growth_tip_zone()); and how fast at
+ *        most, max_speed (growth_after_step()). CRAMP's `cracks.[k].growth` is stage 7's.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -17,7 +18,7 @@
 #include "scene_read.h"
 
 const char *const growth_keys[] = {"length", "max_segments", "direction",
-                                   "criterion", NULL};
+                                   "criterion", "max_speed", NULL};
 
 static void growth_release(void *state)
 {
@@ -69,13 +70,14 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
     if (!g)
         return scene_error(r, s, "growth", "out of memory");
     XefgGrowthSettings *set = &g->set[index];
-    double length = 0.0, most = 0.0;
+    double length = 0.0, most = 0.0, speed = 0.0;
     const char *direction = "hoop", *criterion = "average";
-    *set = (XefgGrowthSettings){1, 0.0, 0, 0, 0,
+    *set = (XefgGrowthSettings){1, 0.0, 0, 0, 0, 0.0,
                                 (int)config_setting_source_line(s)};
     int has_length = scene_number(r, s, "length", 0, 0.0, &length);
     int has_most = scene_number(r, s, "max_segments", 0, 0.0, &most);
-    if (has_length < 0 || has_most < 0 ||
+    int has_speed = scene_number(r, s, "max_speed", 0, 0.0, &speed);
+    if (has_length < 0 || has_most < 0 || has_speed < 0 ||
         scene_string(r, s, "direction", 0, &direction) < 0 ||
         scene_string(r, s, "criterion", 0, &criterion) < 0)
         return -1;
@@ -103,8 +105,13 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
                            "most segments a crack may add must be a whole "
                            "number from 1 to 100000 (room for them is kept "
                            "at set-up)", most);
+    if (has_speed && !(speed > 0.0 && isfinite(speed)))
+        return scene_error(r, at(s, "max_speed"), "max_speed", "%g: the "
+                           "largest speed of a tip must be positive (leave "
+                           "it out for no limit)", speed);
     set->length = length;
     set->max_segments = (int)most;
+    set->max_speed = speed;
     return 0;
 }
 /// [growth_read]

@@ -3,7 +3,9 @@
  * @brief After each step, the tips that reach the criterion grow, one
  *        segment per tip per step: when by Rankine's sigma_1 >= f_t,
  *        where normal to sigma_1 or (direction = "hoop") by the largest
- *        hoop stress of K_I, K_II at the tip.
+ *        hoop stress of K_I, K_II at the tip; with max_speed, not
+ *        sooner than length / max_speed after the tip's last segment; a
+ *        segment that would meet a crack stops the run (growth_meets()).
  */
 #include <math.h>
 #include <stdio.h>
@@ -12,6 +14,16 @@
 #include "cohesive.h"
 #include "growth.h"
 #include "step.h"
+
+/** Has the tip at end @p e of crack @p k grown less than @p wait ago
+ *  (its last event in the list, which holds every event)? */
+static int grew_within(const Growth *g, int k, int e, double t, double wait)
+{
+    for (int i = g->nevent - 1; i >= 0; i--)
+        if (g->event[i].crack == k && g->event[i].end == e)
+            return t - g->event[i].t < wait;
+    return 0;                                     /* its first segment */
+}
 
 /// [growth_after_step]
 int growth_after_step(Sim *sim, Xefg *x, Growth *g)
@@ -32,6 +44,12 @@ int growth_after_step(Sim *sim, Xefg *x, Growth *g)
                 s1 = growth_tip_zone(g, x, k, e, L);
             if (!(s1 >= L->f_t))
                 continue;                            /* when: Rankine */
+            if (g->set[k].max_speed > 0.0 &&       /* at most max_speed */
+                grew_within(g, k, e, sim->t,
+                            g->set[k].length / g->set[k].max_speed)) {
+                g->waits++;
+                continue;
+            }
             if (g->set[k].hoop &&                    /* where: hoop stress */
                 growth_hoop_direction(sim, g, k, e, ahead, K, dir)) {
                 snprintf(g->msg, sizeof g->msg, "K_I, K_II at a tip (no "
@@ -42,6 +60,17 @@ int growth_after_step(Sim *sim, Xefg *x, Growth *g)
             }
             double len = g->set[k].length;
             double px = tip[0] + len * dir[0], py = tip[1] + len * dir[1];
+            int seg, met = growth_meets(x, g->h, k, e, tip,
+                                        (double[2]){px, py}, &seg);
+            if (met >= 0) {                  /* two tips meeting: stop */
+                snprintf(g->msg, sizeof g->msg, "growth of crack %d "
+                         "stopped: its new segment from (%g, %g) to (%g, %g) "
+                         "meets crack %d (its segment %d); a crack that ends "
+                         "on another needs a junction enrichment (Rabczuk and "
+                         "Zi eq. 10), which XEFG here lacks; the crack met",
+                         k, tip[0], tip[1], px, py, met, seg);
+                return step_fail(sim, -1, g->msg, (double)met);
+            }
             if (growth_insert(sim, x, g, k, e, px, py, g->msg,
                               sizeof g->msg - 16)) {
                 strcat(g->msg, "; the crack");    /* " = k" follows */

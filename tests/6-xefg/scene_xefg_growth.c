@@ -56,6 +56,26 @@
  * - both_tips_grow: a crack inside the bar, from (6, 2.5) to (6, 4.5):
  *   both ends grow, a point per event, through to both edges (no tip
  *   left), within 0.05 h of x = 6, balance within 1 %.
+ * - two_tips_meeting (issue 27, "two tips meeting"): the bar's edge
+ *   crack and its mirror about y = 3.5 from the top edge, tips at 2.5 and
+ *   4.5, both growing: by the symmetry the events come in mirrored pairs
+ *   (same step, y -> 7 - y within 1e-9 mm) until the tips meet at
+ *   (6, 3.5); there the run stops (we lack the junction enrichment, the
+ *   paper's eq. 10) with a diagnostic naming both cracks, at the step of
+ *   crack 0's last event, before any segment overlaps the other crack
+ *   (crack 0 up to y = 3.5, crack 1 down to y = 4, its segment to 3.5
+ *   not inserted, within 1e-9 mm), the
+ *   balance within 1 % at the stop. (Before growth_meets() the two lines
+ *   ran on through each other to the opposite edges, each cohesive on the
+ *   same line.)
+ * - speed_limit_waits (growth.max_speed, chapter 6c): the bar's crack
+ *   to the edge (0.6 ms) with max_speed = c_R of its material (plane
+ *   stress, the scene's: Rayleigh's equation with kappa^2 = (1 - nu) / 2,
+ *   c_R = xi c_s, c_s = sqrt(E / (2 (1 + nu) rho))): the
+ *   tip waited in some step (without the limit it grows faster, 3.5 mm
+ *   in 0.002 ms); every two consecutive events at least length /
+ *   max_speed apart (to 1e-12 relative); it still reaches the edge
+ *   (y = 6, no tip left); within 0.05 h of x = 6; balance within 1 %.
  * - path_in_the_outputs: the program's last cracks_NNNNN.csv of the bar
  *   run to the edge holds the 2 + 7 points of the grown crack, the last
  *   at y = 6.
@@ -482,6 +502,116 @@ static void both_tips_grow(void **state)
     tk_free(s);
 }
 
+/** Two tips growing toward each other on one line: a clean stop where
+ *  they meet. */
+static void two_tips_meeting(void **state)
+{
+    (void)state;
+    const char *const over[] = {"run.time=0.6", "cracks=("
+        "{ points = ([6.0, 0.5], [6.0, 2.5]); cohesive = { law = \"linear\"; "
+        "f_t = 1.0; G_f = 0.05; growth = { max_segments = 12; }; }; },"
+        "{ points = ([6.0, 6.5], [6.0, 4.5]); cohesive = { law = \"linear\"; "
+        "f_t = 1.0; G_f = 0.05; growth = { max_segments = 12; }; }; })", NULL};
+    Sim *s = tk_load_file(SCENE, over);
+    Xefg *x = xefg_of(s);
+    Growth *g = x->grow;
+    int rc = 0;
+    while (s->step < s->nsteps && (rc = sim_advance(s)) == 0)
+        ;
+    int pairs = 1, n[2] = {0, 0};
+    long last0 = -1;
+    for (int e = 0; e < g->nevent; e++) {
+        const GrowthEvent *a = &g->event[e];
+        n[a->crack]++;
+        last0 = a->crack == 0 ? a->step : last0;
+        printf("    event %d: crack %d at step %ld, (%g, %g) -> (%g, %g)\n", e,
+               a->crack, a->step, a->x0, a->y0, a->x1, a->y1);
+    }
+    for (int e = 0; e + 1 < g->nevent; e += 2) {  /* mirrored pairs */
+        const GrowthEvent *a = &g->event[e], *b = &g->event[e + 1];
+        pairs &= a->crack == 0 && b->crack == 1 && a->step == b->step &&
+                 fabs(a->y1 - (7.0 - b->y1)) <= 1e-9 &&
+                 fabs(a->x1 - b->x1) <= 1e-9;
+    }
+    double hi0 = -INFINITY, lo1 = INFINITY;
+    for (int i = 0; i < x->crack[0].n; i++)
+        hi0 = fmax(hi0, x->crack[0].y[i]);
+    for (int i = 0; i < x->crack[1].n; i++)
+        lo1 = fmin(lo1, x->crack[1].y[i]);
+    const char *q = s->fail.quantity ? s->fail.quantity : "(none)";
+    printf("  two tips meeting: rc %d at step %ld (t = %g ms), crack 0's last "
+           "event at step %ld; %d + %d events; crack 0 up to y = %g, crack 1 "
+           "down to y = %g; balance error %.2e\n    \"%s = %g\"\n", rc,
+           s->fail.step, s->t, last0, n[0], n[1], hi0, lo1, balance(s), q,
+           s->fail.value);
+    TkBounds b = {0, 0};
+    tk_bound(&b, 4, rc != 0 && s->fail.quantity, "the run did not stop");
+    tk_bound(&b, 4, strstr(q, "growth of crack 1 stopped") &&
+             strstr(q, "meets crack 0") && s->fail.value == 0.0,
+             "the message does not name both cracks");
+    tk_bound(&b, 4, s->fail.step == last0, "stop at step %ld, crack 0's last "
+             "event at %ld", s->fail.step, last0);
+    tk_bound(&b, 4, pairs && n[0] == n[1] + 1, "events not in mirrored pairs "
+             "(%d and %d)", n[0], n[1]);
+    tk_bound(&b, 4, fabs(hi0 - 3.5) <= 1e-9 && lo1 >= 3.5 + 0.5 - 1e-9,
+             "crack 0 to %g, crack 1 to %g", hi0, lo1);
+    tk_bound(&b, 4, balance(s) <= 0.01, "balance off by %.3g", balance(s));
+    tk_bounds_finish(&b);
+    tk_free(s);
+}
+
+/** growth.max_speed: the tip waits length / max_speed between events. */
+static void speed_limit_waits(void **state)
+{
+    (void)state;
+    double E = 1000.0, nu = 0.2, rho = 1e-3, k2 = (1 - nu) / 2; /* stress */
+    double lo = 0.5, hi = 1.0;                 /* Rayleigh's root, bisection */
+    for (int i = 0; i < 100; i++) {
+        double xi = 0.5 * (lo + hi), x2 = xi * xi;
+        if ((2 - x2) * (2 - x2) - 4 * sqrt(1 - x2) * sqrt(1 - k2 * x2) < 0)
+            lo = xi;
+        else
+            hi = xi;
+    }
+    double cr = lo * sqrt(E / (2 * (1 + nu) * rho));
+    char limit[96];
+    snprintf(limit, sizeof limit, "cracks.[0].cohesive.growth.max_speed=%.17g",
+             cr);
+    const char *const over[] = {"run.time=0.6", limit, NULL};
+    Sim *s = tk_load_file(SCENE, over);
+    Xefg *x = xefg_of(s);
+    Growth *g = x->grow;
+    double h = g->h, worst = 0.0, gap = INFINITY;
+    while (s->step < s->nsteps) {
+        int n0 = g->nevent;
+        tk_steps(s, 1);
+        if (s->step % 100 == 0 || g->nevent > n0)
+            worst = fmax(worst, balance(s));
+    }
+    for (int e = 1; e < g->nevent; e++)
+        gap = fmin(gap, g->event[e].t - g->event[e - 1].t);
+    double wait = g->set[0].length / cr, xdev = 0.0;
+    const CrackLine *l = &x->crack[0];
+    for (int i = 0; i < l->n; i++)
+        xdev = fmax(xdev, fabs(l->x[i] - 6.0));
+    printf("  max_speed = c_R = %.2f mm/ms: %d events, %ld steps waited; "
+           "shortest time between events %.6g ms (length / c_R %.6g); ends "
+           "at (%g, %g), tips %d %d; largest |x - 6| %.3g h; worst balance "
+           "error %.2e\n", cr, g->nevent, g->waits, gap, wait,
+           l->x[l->n - 1], l->y[l->n - 1], l->tip[0], l->tip[1], xdev / h,
+           worst);
+    TkBounds b = {0, 0};
+    tk_bound(&b, 4, g->waits > 0, "the tip never waited");
+    tk_bound(&b, 4, g->nevent > 1 && gap >= wait * (1.0 - 1e-12),
+             "events %.6g ms apart, below %.6g", gap, wait);
+    tk_bound(&b, 4, l->y[l->n - 1] >= 6.0 - 1e-9 && !l->tip[0] && !l->tip[1],
+             "not through");
+    tk_bound(&b, 4, xdev <= 0.05 * h, "crack off the line by %.3g", xdev);
+    tk_bound(&b, 4, worst <= 0.01, "balance off by %.3g", worst);
+    tk_bounds_finish(&b);
+    tk_free(s);
+}
+
 /** The path in the outputs: the program writes the grown crack into the
  *  cracks_NNNNN series of stage 2, point by point. */
 static void path_in_the_outputs(void **state)
@@ -529,6 +659,8 @@ int main(void)
         cmocka_unit_test(inclined_crack_turns),
         cmocka_unit_test(tip_at_end_zero),
         cmocka_unit_test(both_tips_grow),
+        cmocka_unit_test(two_tips_meeting),
+        cmocka_unit_test(speed_limit_waits),
         cmocka_unit_test(path_in_the_outputs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
