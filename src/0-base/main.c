@@ -89,7 +89,8 @@ static void usage(FILE *f)
         "SIGINT or SIGTERM stop the run after its current step with the points\n"
         "and a checkpoint written.\n"
         "Exit status: 0 done (or stopped at --stop-at), 1 bad input, 2 output\n"
-        "error, 3 unstable run, 130 interrupted (SIGINT), 143 (SIGTERM).\n",
+        "error, 3 unstable run (or stopped by a rule: a crack out of room to\n"
+        "grow), 130 interrupted (SIGINT), 143 (SIGTERM).\n",
         mpm_stage(), sections, outputs);
 }
 

@@ -211,22 +211,23 @@ static int run_stopped(Sim *sim, RunProgress *rp, const History *h,
     return signo ? 128 + signo : 0;
 }
 
-/** The instability stop's message: step, time, point (if one) and
- *  quantity. */
+/** The stop's message: unstable (or stopped by a rule: Failure::stop),
+ *  step, time, point (if one) and quantity. */
 static void report_unstable(const Sim *sim, const char *outdir, int progress)
 {
     const Failure *f = &sim->fail;
     const char *unit = sim->scene.run.units->time;
     if (progress)
         fputc('\n', stderr);
+    const char *what = f->stop ? "stopped" : "unstable";
     if (f->particle >= 0)
-        fprintf(stderr, "mpm: unstable at step %ld (t = %.6g %s): particle %d "
-                "%s = %g; stopping, output so far is in %s\n", f->step, f->time,
-                unit, f->particle, f->quantity, f->value, outdir);
+        fprintf(stderr, "mpm: %s at step %ld (t = %.6g %s): particle %d "
+                "%s = %g; stopping, output so far is in %s\n", what, f->step,
+                f->time, unit, f->particle, f->quantity, f->value, outdir);
     else                                           /* a crack point, a sum */
-        fprintf(stderr, "mpm: unstable at step %ld (t = %.6g %s): %s = %g; "
-                "stopping, output so far is in %s\n", f->step, f->time, unit,
-                f->quantity, f->value, outdir);
+        fprintf(stderr, "mpm: %s at step %ld (t = %.6g %s): %s = %g; "
+                "stopping, output so far is in %s\n", what, f->step, f->time,
+                unit, f->quantity, f->value, outdir);
 }
 
 /// [sim_run]

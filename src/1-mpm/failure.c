@@ -1,6 +1,7 @@
 /**
  * @file failure.c
- * @brief Recording the step, point and quantity of an instability.
+ * @brief Recording the step, point and quantity of an instability, or
+ *        the reason a rule stopped the run.
  */
 #include "step.h"
 
@@ -17,5 +18,13 @@ int step_fail(Sim *sim, int p, const char *quantity, double value)
         f->quantity = quantity;
         f->value = value;
     }
+    return -1;
+}
+
+int step_stop(Sim *sim, int p, const char *reason, double value)
+{
+    step_fail(sim, p, reason, value);
+    if (sim->fail.quantity == reason)
+        sim->fail.stop = 1;
     return -1;
 }

@@ -33,6 +33,8 @@ typedef struct Failure {
     int particle;       /**< point index */
     const char *quantity; /**< "velocity", "position", "stress", ... */
     double value;       /**< offending value */
+    int stop;           /**< 1: a rule ended the run (step_stop()), not an
+                             instability */
 } Failure;
 
 /** One simulation. */

@@ -86,4 +86,10 @@ void elastic_stress_increment(const Material *mat, double dexx, double deyy,
  *         order the loop ran in. @return -1. */
 int step_fail(Sim *sim, int p, const char *quantity, double value);
 
+/** @brief Record in Sim::fail that a rule, not an instability, ends the
+ *         run at this step (a crack out of room to grow, a tip meeting
+ *         another crack): as step_fail(), with Failure::stop set, so that
+ *         the run says "stopped" with the reason. @return -1. */
+int step_stop(Sim *sim, int p, const char *reason, double value);
+
 #endif

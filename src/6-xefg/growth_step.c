@@ -69,12 +69,12 @@ int growth_after_step(Sim *sim, Xefg *x, Growth *g)
                          "on another needs a junction enrichment (Rabczuk and "
                          "Zi eq. 10), which XEFG here lacks; the crack met",
                          k, tip[0], tip[1], px, py, met, seg);
-                return step_fail(sim, -1, g->msg, (double)met);
+                return step_stop(sim, -1, g->msg, (double)met);
             }
             if (growth_insert(sim, x, g, k, e, px, py, g->msg,
                               sizeof g->msg - 16)) {
                 strcat(g->msg, "; the crack");    /* " = k" follows */
-                return step_fail(sim, -1, g->msg, (double)k);
+                return step_stop(sim, -1, g->msg, (double)k);
             }
             if (g->nevent < g->event_cap)
                 g->event[g->nevent++] = (GrowthEvent){k, e, sim->step, sim->t,

@@ -172,7 +172,7 @@ int crack_growth_step(Sim *sim, CrackGrowth *G, JState *S)
         if (!(J >= s->G_c))
             continue;                       /* when: J reaches G_c */
         if (c->n - 1 >= s->max_segments)
-            return step_fail(sim, -1, s->full, s->max_segments);
+            return step_stop(sim, -1, s->full, s->max_segments);
         /* faces cannot pass through each other: K_I < 0 is shut faces
            (with contact, the pressure that the interaction integral, made
            for traction-free faces, reads as K_I) or faces that overlap
@@ -193,14 +193,14 @@ int crack_growth_step(Sim *sim, CrackGrowth *G, JState *S)
         i = T->end ? c->n - 1 : 0;
         if (!(c->x[i] >= g->ox && c->x[i] < g->ox + g->ncx * g->dx &&
               c->y[i] >= g->oy && c->y[i] < g->oy + g->ncy * g->dy))
-            return step_fail(sim, -1, "crack point (grew out of the grid)",
+            return step_stop(sim, -1, "crack point (grew out of the grid)",
                              c->x[i]);
         int widest = 0, out = !in_a_body(&sim->scene, c->x[i], c->y[i]);
         for (int m = 0; m < S->set[T->crack].ncontours; m++)
             widest = S->set[T->crack].contour[m] > widest
                          ? S->set[T->crack].contour[m] : widest;
         if (!out && !domain_in_grid(g, c->x[i], c->y[i], widest))
-            return step_fail(sim, -1, "crack tip (its J domain grew out of "
+            return step_stop(sim, -1, "crack tip (its J domain grew out of "
                              "the grid)", c->x[i]);
         /* J holds only on a domain whose boundaries across x1 are the
            crack's own faces: a free edge or another crack in it stops it */

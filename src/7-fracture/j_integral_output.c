@@ -21,7 +21,7 @@ int j_integral_task7(Sim *sim, void *state, Seam seam)
     if (done % S->every != 0 && done != sim->nsteps)
         return 0;
     if (j_integral_evaluate(sim, S)) {
-        sim->fail = (Failure){sim->step, sim->t, -1, "j-integral memory", NAN};
+        sim->fail = (Failure){sim->step, sim->t, -1, "j-integral memory", NAN, 0};
         return -1;
     }
     S->at_step = done;

@@ -3,7 +3,7 @@
  * @brief The mpm program with the meshfree method: one scene file runs with
  *        either method; a run's files are whole; a run stopped and restarted
  *        gives the same bytes as one that was not; a step past the stable
- *        limit stops with a diagnostic.
+ *        limit stops with a diagnostic, a crack out of room with its own.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -76,6 +76,23 @@ static void past_the_stable_step_it_stops(void **state)
     tk_assert_outputs_whole(OUT "/unstable");
 }
 
+/** A crack that has used the room set aside for it stops the run by a
+ *  rule, not an instability: exit status 3, the line says "stopped" and
+ *  why, not "unstable", and the files are whole. */
+static void a_crack_out_of_room_stops(void **state)
+{
+    (void)state;
+    int rc = tk_run_mpm("tests/6-xefg/scenes/growth_bar.cfg -q -o " OUT "/room "
+                        "run.time=0.6 cracks.[0].cohesive.growth.max_segments=3",
+                        out, sizeof out);
+    if (rc != 3)
+        fail_msg("exit %d, expected 3: %s", rc, out);
+    assert_non_null(strstr(out, "stopped at step"));
+    assert_non_null(strstr(out, "max_segments = 3"));
+    assert_null(strstr(out, "unstable"));
+    tk_assert_outputs_whole(OUT "/room");
+}
+
 /** A discretisation that would not fit is refused before its rows are
  *  built, with the estimate and the limit. */
 static void too_large_is_refused(void **state)
@@ -96,6 +113,7 @@ int main(void)
         cmocka_unit_test(stop_and_restart_gives_the_same_bytes),
         cmocka_unit_test(at_the_stable_step_it_runs),
         cmocka_unit_test(past_the_stable_step_it_stops),
+        cmocka_unit_test(a_crack_out_of_room_stops),
         cmocka_unit_test(too_large_is_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
