@@ -51,7 +51,7 @@ void fields_begin_step(struct Sim *sim);
 /**
  * @brief Add @p key bits to the key of pair (point @p p, corner @p a) of a
  *        table of linear rows (FieldTable::width == STENCIL_NODES: stage 8
- *        refuses contact with a wider run.shape).
+ *        keys a wider run.shape with fields_key_wide()).
  * @return 0, or -1 when memory is exhausted (Sim::fail filled).
  */
 int fields_key(struct Sim *sim, int p, int a, unsigned key);

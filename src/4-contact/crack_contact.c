@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "checkpoint.h"
+#include "contact_stencil.h"
 #include "crack_contact.h"
 #include "output.h"
 #include "step.h"
@@ -22,7 +23,8 @@ int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     const Scene *sc = &sim->scene;
     S->vnode = calloc((size_t)sim->grid.nnodes, sizeof(double));
     S->volumes_step = -1;
-    if (cracks_on_crossed(C, crack_normals_crossed, &S->normals)) {
+    if (cracks_on_crossed(C, sc->run.stencil ? crack_normals_crossed_wide
+                                             : crack_normals_crossed, &S->normals)) {
         snprintf(err, errlen, "%s: crack contact: more than %d subscribers to "
                  "the crack crossings", sc->file, CRACKS_CROSSED_MAX);
         return -1;
@@ -90,25 +92,22 @@ static int reserve_slots(Sim *sim, ContactState *S)
 
 /// [node_volumes]
 /** Point @p p's share of node_volumes(), to the nodes of @p own (NULL:
- *  all). Inlined in the one-thread loop, where @p own is a constant NULL. */
+ *  all), through @p wide, run.shape's stencil function, or NULL for the
+ *  cell's four nodes (contact_stencil.h). */
 static inline __attribute__((always_inline)) void
-volume_point(Sim *sim, void *state, int p, const Owned *own)
+volume_at(Sim *sim, ContactState *S, int p, const Owned *own, StencilFn wide)
 {
-    ContactState *S = state;
     const FieldTable *F = &sim->fields;
     const Particles *P = &sim->pts;
-    int node[STENCIL_NODES], near = 0;
-    stencil_nodes(sim, p, node);
-    for (int a = 0; a < STENCIL_NODES; a++)
-        near |= F->first[node[a]] >= 0;
-    if (!near)
-        return;
+    int node[STENCIL_MAX];
     Stencil st;
-    stencil_of_point(sim, p, &st);
+    int n = contact_stencil(sim, wide, p, node, &st);
+    if (!n)
+        return;
     double v = (1.0 + P->exx[p]) * (1.0 + P->eyy[p]) * P->vol[p];
     double mux = S->opening ? P->m[p] * (P->x[p] - S->x0[p]) : 0.0;
     double muy = S->opening ? P->m[p] * (P->y[p] - S->y0[p]) : 0.0;
-    for (int a = 0; a < STENCIL_NODES; a++)
+    for (int a = 0; a < n; a++)
         if (F->first[node[a]] >= 0 && owns(&sim->grid, own, node[a])) {
             S->vnode[node[a]] += v * st.S[a];
             if (S->opening) {
@@ -118,11 +117,37 @@ volume_point(Sim *sim, void *state, int p, const Owned *own)
         }
 }
 
+/** volume_at() through the cell's four nodes. Inlined in the one-thread
+ *  loop, where @p own is a constant NULL. */
+static inline __attribute__((always_inline)) void
+volume_point(Sim *sim, void *state, int p, const Owned *own)
+{
+    volume_at(sim, state, p, own, NULL);
+}
+
+/** volume_at() through run.shape's stencil function (chapter 8). */
+static inline __attribute__((always_inline)) void
+volume_point_wide(Sim *sim, void *state, int p, const Owned *own)
+{
+    volume_at(sim, state, p, own, sim->scene.run.stencil);
+}
+
+/** The wide stencils' scatter, compiled on its own (chapter 8). */
+static __attribute__((noinline)) void volumes_wide(Sim *sim, ContactState *S)
+{
+    if (sim->strips.n > 0)
+        strip_scatter(sim, volume_point_wide, S);
+    else
+        for (int p = 0, np = sim->pts.n; p < np; p++)
+            volume_point_wide(sim, S, p, NULL);
+}
+
 /** Eq. 8-9 at the nodes that carry extra fields this step (the only ones
  *  where contact is possible): V_i = sum_p V_p S_ip with the current point
  *  volume V_p = (1 + e_xx)(1 + e_yy) m_p / rho_p; and, for the opening
  *  rule, each field's sum_p m_p S_ip u_p of the points' displacements. A
- *  point none of whose nodes has extra fields costs four integer tests.
+ *  point none of whose nodes has extra fields costs four integer tests (a
+ *  wider stencil's: the stencil and a test per node).
  *  On threads by strips, each node summing in point order as on one
  *  (strip_scatter.h). */
 static int node_volumes(Sim *sim, ContactState *S)
@@ -136,7 +161,9 @@ static int node_volumes(Sim *sim, ContactState *S)
         for (int s = F->touched[k]; s >= 0 && S->opening; s = field_next(F, g, s))
             S->ux[s] = S->uy[s] = 0.0;
     }
-    if (sim->strips.n > 0)
+    if (sim->scene.run.stencil)              /* another row of run.shape */
+        volumes_wide(sim, S);
+    else if (sim->strips.n > 0)
         strip_scatter(sim, volume_point, S);
     else
         for (int p = 0, np = sim->pts.n; p < np; p++)

@@ -23,7 +23,7 @@ static int resize(void **a, size_t size, int cap)
 /** Room for as many rows as the field table has (it grows by doubling). */
 static int reserve_rows(CrackNormals *N, const FieldTable *F)
 {
-    int cap = F->row_cap, n = STENCIL_NODES;
+    int cap = F->row_cap, n = F->width;
     if (cap <= N->row_cap)
         return 0;
     if (resize((void **)&N->row_nx, n * sizeof(double), cap) ||
@@ -48,14 +48,15 @@ static int reserve_slots(CrackNormals *N, const FieldTable *F)
     return 0;
 }
 
-/** The rows Task 1 made since the last call start with no normal (@p p:
- *  the point a failure names). */
-static int clear_new_rows(Sim *sim, CrackNormals *N, int p)
+/** The rows Task 1 made since the last call, of @p n pairs each, start
+ *  with no normal (@p p: the point a failure names). */
+static inline __attribute__((always_inline)) int
+clear_new_rows(Sim *sim, CrackNormals *N, int p, int n)
 {
     const FieldTable *F = &sim->fields;
     if (reserve_rows(N, F))
         return step_fail(sim, p, "memory for crack normals", F->row_cap);
-    for (int k = STENCIL_NODES * N->rows; k < STENCIL_NODES * F->nrows; k++) {
+    for (int k = n * N->rows; k < n * F->nrows; k++) {
         N->row_nx[k] = N->row_ny[k] = 0.0;
         N->row_tag[k] = -1;
     }
@@ -70,12 +71,15 @@ int crack_normals_alloc(CrackNormals *N, const Sim *sim)
 }
 
 /// [crack_normals_crossed]
-int crack_normals_crossed(Sim *sim, const Cracks *C, int p, int a,
-                          const CrackHit *hit, void *state)
+/** Keep the normal of crossing @p hit in pair (@p p, @p a) of rows of @p n
+ *  pairs (a constant STENCIL_NODES for linear rows, FieldTable::width for
+ *  wider ones). */
+static inline __attribute__((always_inline)) int
+normal_crossed(Sim *sim, const Cracks *C, int p, int a, const CrackHit *hit,
+               CrackNormals *N, int n)
 {
-    CrackNormals *N = state;
-    int r = sim->fields.row_of[p], k = STENCIL_NODES * r + a;
-    if (r >= N->rows && clear_new_rows(sim, N, p))
+    int r = sim->fields.row_of[p], k = n * r + a;
+    if (r >= N->rows && clear_new_rows(sim, N, p, n))
         return -1;
     const Crack *c = &C->crack[hit->crack];  /* above to below: (dy, -dx) */
     double dx = c->x[hit->segment + 1] - c->x[hit->segment];
@@ -87,14 +91,26 @@ int crack_normals_crossed(Sim *sim, const Cracks *C, int p, int a,
         N->row_tag[k] = hit->crack;
     return 0;
 }
+
+int crack_normals_crossed(Sim *sim, const Cracks *C, int p, int a,
+                          const CrackHit *hit, void *state)
+{
+    return normal_crossed(sim, C, p, a, hit, state, STENCIL_NODES);
+}
+
+int crack_normals_crossed_wide(Sim *sim, const Cracks *C, int p, int a,
+                               const CrackHit *hit, void *state)
+{
+    return normal_crossed(sim, C, p, a, hit, state, sim->fields.width);
+}
 /// [crack_normals_crossed]
 
 /// [crack_normals_sum]
 int crack_normals_sum(Sim *sim, CrackNormals *N)
 {
     const FieldTable *F = &sim->fields;
-    int nn = sim->grid.nnodes, n = STENCIL_NODES;
-    if (clear_new_rows(sim, N, 0))
+    int nn = sim->grid.nnodes, n = F->width;
+    if (clear_new_rows(sim, N, 0, n))
         return -1;
     if (reserve_slots(N, F))
         return step_fail(sim, 0, "memory for crack normals", F->extra_cap);
@@ -102,7 +118,7 @@ int crack_normals_sum(Sim *sim, CrackNormals *N)
         N->nx[e] = N->ny[e] = 0.0;
         N->tag[e] = -1;
     }
-    for (int k = 0; k < n * F->nrows; k++) {    /* rows in order, pairs 0-3 */
+    for (int k = 0; k < n * F->nrows; k++) {    /* rows in order, pairs in order */
         int s = F->row_slot[k], tag = N->row_tag[k];
         if (s < nn)
             continue;                        /* field 0: the node's own slot */

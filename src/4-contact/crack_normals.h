@@ -20,9 +20,10 @@
 /// [crack_normals]
 /** Crack normals per pair row and per extra slot of the field table. */
 typedef struct CrackNormals {
-    double *row_nx;   /**< 4 per row: crack normal sum x of the pair */
-    double *row_ny;   /**< 4 per row: crack normal sum y */
-    int *row_tag;     /**< 4 per row: lowest tag (crack index), or -1 */
+    double *row_nx;   /**< FieldTable::width per row: crack normal sum x
+                           of the pair */
+    double *row_ny;   /**< the same per row: crack normal sum y */
+    int *row_tag;     /**< the same per row: lowest tag (crack index), or -1 */
     int rows;         /**< rows of this Task 1 set to zero so far */
     int row_cap;      /**< rows allocated */
     double *nx;       /**< per extra slot: sum of its pairs' normals, x */
@@ -46,6 +47,14 @@ int crack_normals_alloc(CrackNormals *N, const Sim *sim);
  */
 int crack_normals_crossed(Sim *sim, const Cracks *C, int p, int a,
                           const CrackHit *hit, void *state);
+
+/**
+ * @brief As crack_normals_crossed(), for rows of FieldTable::width pairs
+ *        (a wider run.shape, chapter 8).
+ * @return 0, or -1 when memory is exhausted (Sim::fail filled).
+ */
+int crack_normals_crossed_wide(Sim *sim, const Cracks *C, int p, int a,
+                               const CrackHit *hit, void *state);
 
 /**
  * @brief After Task 1 (fields_resolve() gave every pair its slot): each

@@ -12,6 +12,7 @@
 
 #include "contact_law.h"
 #include "checkpoint.h"
+#include "contact_stencil.h"
 #include "material_contact.h"
 #include "output.h"
 #include "step.h"
@@ -44,6 +45,41 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     return 0;
 }
 
+/// [material_key_fields_wide]
+/** material_key_fields() through run.shape's stencil function (chapter 8),
+ *  compiled on its own: a node is mixed when the stencils of points of
+ *  several groups reach it (M->cell_groups holds per node the groups
+ *  whose points reach it), and a point keys every pair of its stencil at
+ *  a mixed node, in its stencil's order (the pairs Task 1 keys). */
+static __attribute__((noinline)) int key_fields_wide(Sim *sim, MaterialContact *M)
+{
+    const Particles *P = &sim->pts;
+    const Grid *g = &sim->grid;
+    StencilFn wide = sim->scene.run.stencil;
+    memset(M->cell_groups, 0, sizeof(unsigned) * (size_t)g->nnodes);
+    for (int p = 0; p < P->n; p++) {            /* the groups at each node */
+        int node[STENCIL_MAX], n = stencil_node_list(sim, wide, p, node);
+        for (int a = 0; a < n; a++)
+            M->cell_groups[node[a]] |= 1u << M->group_of_body[P->body[p]];
+    }
+    for (int n = 0; n < g->nnodes; n++) {
+        unsigned seen = M->cell_groups[n];
+        M->mixed[n] = (seen & (seen - 1)) != 0;  /* more than one group */
+    }
+    for (int p = 0; p < P->n; p++) {
+        int node[STENCIL_MAX], group = M->group_of_body[P->body[p]];
+        if (group == 0)
+            continue;                           /* field 0 */
+        int n = stencil_node_list(sim, wide, p, node);
+        for (int a = 0; a < n; a++)
+            if (M->mixed[node[a]] &&
+                fields_key_wide(sim, p, a, (unsigned)group << M->shift))
+                return -1;
+    }
+    return 0;
+}
+/// [material_key_fields_wide]
+
 /// [material_key_fields]
 int material_key_fields(Sim *sim, void *state, Seam seam)
 {
@@ -52,6 +88,8 @@ int material_key_fields(Sim *sim, void *state, Seam seam)
     const Grid *g = &sim->grid;
     int nx = g->nnx;
     (void)seam;
+    if (sim->scene.run.stencil)                 /* another row of run.shape */
+        return key_fields_wide(sim, M);
     memset(M->cell_groups, 0, sizeof(unsigned) * (size_t)g->nnodes);
     for (int p = 0; p < P->n; p++)              /* the groups in each cell */
         M->cell_groups[P->cell[p]] |= 1u << M->group_of_body[P->body[p]];
@@ -128,40 +166,98 @@ static double point_size(const Sim *sim, int p, double half[2])
     return sx * sy * P->vol[p] / b->thickness;
 }
 
-/** Is point @p p in a cell beside a node with several fields? If so, its
- *  nodes, stencil, half sizes and area. */
-static int point_near(const Sim *sim, const MaterialContact *M, int p,
-                      int node[STENCIL_NODES], Stencil *st, double half[2],
-                      double *area)
+/** The nodes, stencil, half sizes and area of point @p p, a point near a
+ *  node with several fields (out of line: most points are not near). */
+static __attribute__((noinline)) void
+point_near_stencil(const Sim *sim, int p, int node[STENCIL_NODES], Stencil *st,
+                   double half[2], double *area)
 {
-    if (!M->near[sim->pts.cell[p]])
-        return 0;
     *area = point_size(sim, p, half);
     stencil_nodes(sim, p, node);
     stencil_of_point(sim, p, st);
+}
+
+/** Is point @p p in a cell beside a node with several fields? If so, its
+ *  nodes, stencil, half sizes and area. */
+static inline __attribute__((always_inline)) int
+point_near(const Sim *sim, const MaterialContact *M, int p,
+           int node[STENCIL_NODES], Stencil *st, double half[2], double *area)
+{
+    if (!M->near[sim->pts.cell[p]])
+        return 0;
+    point_near_stencil(sim, p, node, st, half, area);
     return 1;
+}
+
+/** As point_near() through @p wide, run.shape's stencil function: a wider
+ *  point reaches beyond its cell's corners (MaterialContact::near), so
+ *  its own nodes tell. @return its stencil's nodes, or 0 when not near. */
+static int point_near_wide(const Sim *sim, StencilFn wide, int p,
+                           int node[STENCIL_MAX], Stencil *st, double half[2],
+                           double *area)
+{
+    int n = contact_stencil(sim, wide, p, node, st);
+    if (n)
+        *area = point_size(sim, p, half);
+    return n;
+}
+
+/** point_near() through @p wide, or NULL for the cell's four nodes.
+ *  @return the nodes of the point's stencil, or 0 when it is not near. */
+static inline __attribute__((always_inline)) int
+point_nodes(const Sim *sim, const MaterialContact *M, StencilFn wide, int p,
+            int node[STENCIL_MAX], Stencil *st, double half[2], double *area)
+{
+    if (wide)                                   /* another row of run.shape */
+        return point_near_wide(sim, wide, p, node, st, half, area);
+    return point_near(sim, M, p, node, st, half, area) ? STENCIL_NODES : 0;
 }
 
 /// [mass_gradients]
 /** Point @p p's share of mass_gradients(), to the nodes of @p own (NULL:
- *  all). Inlined in the one-thread loop, where @p own is a constant NULL. */
+ *  all), through @p wide (NULL: the cell's four nodes). */
 static inline __attribute__((always_inline)) void
-gradient_point(Sim *sim, void *state, int p, const Owned *own)
+gradient_at(Sim *sim, MaterialContact *M, int p, const Owned *own, StencilFn wide)
 {
-    MaterialContact *M = state;
     const FieldTable *F = &sim->fields;
-    int node[STENCIL_NODES];
+    int node[STENCIL_MAX];
     Stencil st;
     double half[2], area;
-    if (!point_near(sim, M, p, node, &st, half, &area))
+    int n = point_nodes(sim, M, wide, p, node, &st, half, &area);
+    if (!n)
         return;
     double mp = sim->pts.m[p];
-    for (int a = 0; a < STENCIL_NODES; a++)
+    for (int a = 0; a < n; a++)
         if (F->first[node[a]] >= 0 && owns(&sim->grid, own, node[a])) {
             M->gx[st.slot[a]] += mp * st.Gx[a];
             M->gy[st.slot[a]] += mp * st.Gy[a];
             M->va[st.slot[a]] += area * st.S[a];
         }
+}
+
+/** gradient_at() through the cell's four nodes. Inlined in the one-thread
+ *  loop, where @p own is a constant NULL. */
+static inline __attribute__((always_inline)) void
+gradient_point(Sim *sim, void *state, int p, const Owned *own)
+{
+    gradient_at(sim, state, p, own, NULL);
+}
+
+/** gradient_at() through run.shape's stencil function (chapter 8). */
+static inline __attribute__((always_inline)) void
+gradient_point_wide(Sim *sim, void *state, int p, const Owned *own)
+{
+    gradient_at(sim, state, p, own, sim->scene.run.stencil);
+}
+
+/** The wide stencils' gradients, compiled on their own (chapter 8). */
+static __attribute__((noinline)) void gradients_wide(Sim *sim, MaterialContact *M)
+{
+    if (sim->strips.n > 0)
+        strip_scatter(sim, gradient_point_wide, M);
+    else
+        for (int p = 0, np = sim->pts.n; p < np; p++)
+            gradient_point_wide(sim, M, p, NULL);
 }
 
 /** Task 2, first pass: at the nodes with several fields, each field's mass
@@ -170,7 +266,9 @@ gradient_point(Sim *sim, void *state, int p, const Owned *own)
  *  strips, each node summing in point order as on one (strip_scatter.h). */
 static void mass_gradients(Sim *sim, MaterialContact *M)
 {
-    if (sim->strips.n > 0)
+    if (sim->scene.run.stencil)                 /* another row of run.shape */
+        gradients_wide(sim, M);
+    else if (sim->strips.n > 0)
         strip_scatter(sim, gradient_point, M);
     else
         for (int p = 0, np = sim->pts.n; p < np; p++)
@@ -210,21 +308,19 @@ static void candidate_axes(Sim *sim, MaterialContact *M, int n)
 
 /// [interface_reach]
 /** Point @p p's share of interface_reach(), at the nodes of @p own (NULL:
- *  all): a point covers x_p . c -/+ r_p along each candidate direction c
- *  of a node, r_p = |c_x| half_x + |c_y| half_y (its rectangle's half
- *  width). */
+ *  all), through @p wide (NULL: the cell's four nodes): a point covers
+ *  x_p . c -/+ r_p along each candidate direction c of a node, r_p =
+ *  |c_x| half_x + |c_y| half_y (its rectangle's half width). */
 static inline __attribute__((always_inline)) void
-reach_point(Sim *sim, void *state, int p, const Owned *own)
+reach_at(Sim *sim, MaterialContact *M, int p, const Owned *own, StencilFn wide)
 {
-    MaterialContact *M = state;
     const FieldTable *F = &sim->fields;
     const Particles *P = &sim->pts;
-    int node[STENCIL_NODES];
+    int node[STENCIL_MAX];
     Stencil st;
     double half[2], area;
-    if (!point_near(sim, M, p, node, &st, half, &area))
-        return;
-    for (int a = 0; a < STENCIL_NODES; a++) {
+    int nodes = point_nodes(sim, M, wide, p, node, &st, half, &area);
+    for (int a = 0; a < nodes; a++) {
         int n = node[a], s = st.slot[a];
         if (F->first[n] < 0 || st.S[a] <= 0.0 || !owns(&sim->grid, own, n))
             continue;
@@ -239,12 +335,39 @@ reach_point(Sim *sim, void *state, int p, const Owned *own)
     }
 }
 
+/** reach_at() through the cell's four nodes. Inlined in the one-thread
+ *  loop, where @p own is a constant NULL. */
+static inline __attribute__((always_inline)) void
+reach_point(Sim *sim, void *state, int p, const Owned *own)
+{
+    reach_at(sim, state, p, own, NULL);
+}
+
+/** reach_at() through run.shape's stencil function (chapter 8). */
+static inline __attribute__((always_inline)) void
+reach_point_wide(Sim *sim, void *state, int p, const Owned *own)
+{
+    reach_at(sim, state, p, own, sim->scene.run.stencil);
+}
+
+/** The wide stencils' reaches, compiled on their own (chapter 8). */
+static __attribute__((noinline)) void reaches_wide(Sim *sim, MaterialContact *M)
+{
+    if (sim->strips.n > 0)
+        strip_scatter(sim, reach_point_wide, M);
+    else
+        for (int p = 0, np = sim->pts.n; p < np; p++)
+            reach_point_wide(sim, M, p, NULL);
+}
+
 /** Task 2, second pass: how far each field's points reach along each
  *  candidate direction of the node; on threads by strips, a thread writing
  *  its own nodes only (strip_scatter.h). */
 static void interface_reach(Sim *sim, MaterialContact *M)
 {
-    if (sim->strips.n > 0)
+    if (sim->scene.run.stencil)                 /* another row of run.shape */
+        reaches_wide(sim, M);
+    else if (sim->strips.n > 0)
         strip_scatter(sim, reach_point, M);
     else
         for (int p = 0, np = sim->pts.n; p < np; p++)

@@ -1,9 +1,9 @@
 /**
  * @file shapes_check.c
- * @brief The limits of uGIMP and CPDI in this stage: the MPM step, one
- *        velocity field per node except across explicit cracks (no
- *        contact), and every domain inside the grid (a node off the grid
- *        would take a share of the point's mass).
+ * @brief The limits of uGIMP and CPDI in this stage: the MPM step and
+ *        every domain inside the grid (a node off the grid would take a
+ *        share of the point's mass). Cracks, crack contact and contact
+ *        between bodies read the point's own stencil (contact_stencil.h).
  */
 #include "shapes_check.h"
 
@@ -56,20 +56,6 @@ int shapes_prepare(Sim *sim, void *state, char *err, size_t errlen)
         snprintf(err, errlen, "%s: run.shape = \"%s\" needs run.method = "
                  "\"mpm\" (the method \"%s\" has its own shape functions)",
                  sc->file, name, sc->run.method->name);
-        return -1;
-    }
-    if (sim_state(sim, "material contact")) {
-        snprintf(err, errlen, "%s: run.shape = \"%s\" with contact between "
-                 "bodies is not done (material_contact.c keys and reads the "
-                 "four nodes of a linear stencil): use run.shape = \"linear\"",
-                 sc->file, name);
-        return -1;
-    }
-    if (sim_state(sim, "crack contact")) {
-        snprintf(err, errlen, "%s: run.shape = \"%s\" with crack contact is "
-                 "not done (crack_contact.c and crack_normals.c read the four "
-                 "nodes of a linear stencil): use run.shape = \"linear\" or "
-                 "leave out the cracks' contact", sc->file, name);
         return -1;
     }
     if (sc->run.shape == &shape_cpdi)

@@ -12,9 +12,8 @@
 
 /**
  * @brief SEAM_PREPARE: with run.shape = "gimp" or "cpdi", refuse what this
- *        stage does not carry out with them yet (another run.method, keyed
- *        velocity fields: cracks, contact) and a point whose domain is not
- *        inside the grid; subscribe each shape's Task-7 work. Nothing for
+ *        stage does not carry out with them (another run.method) and a
+ *        point whose domain is not inside the grid; subscribe each shape's Task-7 work. Nothing for
  *        the linear shape. @return 0, or -1 with a message.
  */
 int shapes_prepare(Sim *sim, void *state, char *err, size_t errlen);

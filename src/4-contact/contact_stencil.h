@@ -1,0 +1,51 @@
+/**
+ * @file contact_stencil.h
+ * @brief The stencil that contact's scatters read (node volumes, mass
+ *        gradients, areas, reaches): the point's own, as Task 1 keyed it,
+ *        the cell's four nodes or a wider row of run.shape (chapter 8).
+ *
+ * Each scatter is compiled twice from one inline body: with @p wide a
+ * constant NULL (the cell's four nodes, the code of the paper's linear
+ * shape functions) and with run.shape's stencil function, so that a scene
+ * without a wider stencil runs the loops it ran before chapter 8.
+ */
+#ifndef MPM_CONTACT_STENCIL_H
+#define MPM_CONTACT_STENCIL_H
+
+#include "stencil.h"
+
+/// [contact_stencil]
+/** @brief Point @p p's stencil for contact, when one of its nodes carries
+ *         extra fields this step (FieldTable::first): its nodes in
+ *         @p node and its S_ip, G_ip and field slots in @p st, through
+ *         @p wide (run.shape's stencil function) or, NULL, the cell's four
+ *         nodes. @return the nodes in use, or 0 when none of them has
+ *         extra fields (@p st is then not filled) */
+static inline __attribute__((always_inline)) int
+contact_stencil(const Sim *sim, StencilFn wide, int p, int node[STENCIL_MAX],
+                Stencil *st)
+{
+    const FieldTable *F = &sim->fields;
+    int near = 0;
+    if (wide) {                            /* another row of run.shape */
+        wide(sim, p, st);
+        for (int a = 0; a < st->n; a++) {
+            node[a] = st->slot[a];         /* field 0: the nodes */
+            near |= F->first[node[a]] >= 0;
+        }
+        if (!near)
+            return 0;
+        stencil_fields(sim, p, st);
+        return st->n;
+    }
+    stencil_nodes(sim, p, node);
+    for (int a = 0; a < STENCIL_NODES; a++)
+        near |= F->first[node[a]] >= 0;
+    if (!near)
+        return 0;
+    stencil_linear(sim, p, st);
+    return st->n = STENCIL_NODES;
+}
+/// [contact_stencil]
+
+#endif
