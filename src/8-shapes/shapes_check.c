@@ -11,6 +11,7 @@
 
 #include "cpdi.h"
 #include "gimp.h"
+#include "j_integral.h"
 #include "step.h"
 
 /** The first point whose domain is not inside the grid, or -1; its
@@ -58,6 +59,17 @@ int shapes_prepare(Sim *sim, void *state, char *err, size_t errlen)
                  sc->file, name, sc->run.method->name);
         return -1;
     }
+    const JState *J = sim_state(sim, "j-integral");
+    for (int k = 0; J && k < J->ncracks; k++)
+        if (J->set[k].on) {             /* stage 7 reads a linear stencil */
+            char where[SCENE_AT_LEN];
+            snprintf(err, errlen, "%s: cracks.[%d].j_integral with run.shape "
+                     "= \"%s\": the J-integral and K (stage 7) read the four "
+                     "nodes of a linear stencil: use run.shape = \"linear\"",
+                     scene_lines_at(sc->lines, sc->file, J->set[k].line, where,
+                                    SCENE_AT_LEN), k, name);
+            return -1;
+        }
     if (sc->run.shape == &shape_cpdi)
         return cpdi_prepare(sim, err, errlen);
     int p = domain_outside(sim, &at);
