@@ -54,15 +54,17 @@ static int cohesive_report(const Sim *sim, void *state, FILE *f)
     const char *eu = sim->scene.run.units->energy;
     double k = xefg_kinetic_energy(x), u = xefg_strain_energy(x, sim);
     double s = cohesive_stored_energy(c), d = cohesive_dissipated_energy(c);
-    double in = x->e0 + x->w_held, err = in - k - u - s - d;
+    double w = x->w_damped;
+    double in = x->e0 + x->w_held, err = in - k - u - s - d - w;
     return fprintf(f, "mpm: cohesive: %d points; energy (%s) at t = %g: in %.9g "
                    "(start %.9g + held work %.9g) = kinetic %.9g + strain %.9g + "
-                   "cohesive stored %.9g + dissipated %.9g + error %.9g (%+.4f "
-                   "%% of in)\n", c->npt, eu, sim->t, in, x->e0, x->w_held, k,
-                   u, s, d, err, in != 0.0 ? 100.0 * err / in : 0.0) < 0 ? -1 : 0;
+                   "cohesive stored %.9g + dissipated %.9g + damped %.9g + error "
+                   "%.9g (%+.4f %% of in)\n", c->npt, eu, sim->t, in, x->e0,
+                   x->w_held, k, u, s, d, w, err,
+                   in != 0.0 ? 100.0 * err / in : 0.0) < 0 ? -1 : 0;
 }
 
-/** The checkpoint: the history variables and the held work. */
+/** The checkpoint: the history variables, the held and damped work. */
 static int cohesive_checkpoint(Sim *sim, void *state, FILE *f, int save)
 {
     Cohesive *c = state;
@@ -71,6 +73,7 @@ static int cohesive_checkpoint(Sim *sim, void *state, FILE *f, int save)
     if (checkpoint_io(f, &m, sizeof m, save) || m != n ||
         checkpoint_io(f, c->dmax, sizeof(double) * (size_t)n, save) ||
         checkpoint_io(f, &x->w_held, sizeof x->w_held, save) ||
+        checkpoint_io(f, &x->w_damped, sizeof x->w_damped, save) ||
         checkpoint_io(f, &x->e0, sizeof x->e0, save))
         return -1;
     if (!save)

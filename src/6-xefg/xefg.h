@@ -114,6 +114,8 @@ typedef struct Xefg {
                                     (xefg_gather.h; NULL: one thread) */
     double w_held;      /**< work of the held places so far (counted when
                              a crack is cohesive) */
+    double w_damped;    /**< work the damping (run.damping) took out so
+                             far: the half kicks' exact share */
     double e0;          /**< kinetic + strain energy at the start */
 } Xefg;
 
