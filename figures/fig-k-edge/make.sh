@@ -61,12 +61,12 @@ dat=$RUNS/table.dat
 awk 'FNR == 1 { r = FILENAME; sub(/.*xefg-/, "", r); sub(/\.dat$/, "", r) }
      FILENAME ~ /xefg-/ && !/^#/ { xf[r + 0, $1] = $7; xe[r + 0, $1] = $9; next }
      FILENAME ~ /cramp/ && !/^#/ { k = $1 + 0 SUBSEP $2; if (!(k in n)) { order[++m] = k; h[k] = $3; hb[k] = $7 }
-                                   n[k]++; cf[k, n[k]] = $6; ce[k, n[k]] = $8 }
-     END { print "# a/W W/h h_mm CRAMP_F_1mm CRAMP_F_1.5mm CRAMP_F_2mm err_1mm_% err_1.5mm_% err_2mm_% XEFG_F XEFG_err_% handbook_F"
+                                   n[k]++; cf[k, n[k]] = $6; ce[k, n[k]] = $8; ke[k] = $13 }
+     END { print "# a/W W/h h_mm CRAMP_F_1mm CRAMP_F_1.5mm CRAMP_F_2mm err_1mm_% err_1.5mm_% err_2mm_% XEFG_F XEFG_err_% handbook_F CRAMP_KE/SE"
            for (i = 1; i <= m; i++) { k = order[i]; split(k, p, SUBSEP)
-               printf "%.2f %d %.4g %.5f %.5f %.5f %+.4f %+.4f %+.4f %s %s %.5f\n", p[1], p[2], h[k],
+               printf "%.2f %d %.4g %.5f %.5f %.5f %+.4f %+.4f %+.4f %s %s %.5f %s\n", p[1], p[2], h[k],
                       cf[k, 1], cf[k, 2], cf[k, 3], ce[k, 1], ce[k, 2], ce[k, 3],
-                      ((k in xf) ? sprintf("%.5f", xf[k]) : "-"), ((k in xe) ? sprintf("%+.4f", xe[k]) : "-"), hb[k] } }' \
+                      ((k in xf) ? sprintf("%.5f", xf[k]) : "-"), ((k in xe) ? sprintf("%+.4f", xe[k]) : "-"), hb[k], ke[k] } }' \
     "$RUNS"/xefg-0.3.dat "$RUNS"/xefg-0.45.dat "$RUNS"/xefg-0.6.dat "$RUNS/cramp.dat" >"$dat" || exit 1
 
 {
@@ -85,11 +85,14 @@ awk 'FNR == 1 { r = FILENAME; sub(/.*xefg-/, "", r); sub(/\.dat$/, "", r) }
     echo "== Table: F = K_I / (sigma sqrt(pi a)); CRAMP on the domains of 1, 1.5, 2 mm about the tip (tip mid-cell),"
     echo "   XEFG by the interaction integral on the ring r_d = 1.5 mm (points at cell centres); errors against Brown-Srawley"
     printf '%-5s %-5s %-6s | %-23s | %-22s | %-16s | %s\n' "a/W" "cells" "h mm" "CRAMP F (1, 1.5, 2 mm)" "CRAMP error % (same)" "XEFG F, error %" "handbook F"
-    awk '!/^#/ { printf "%-5s W/%-3s %-6s | %s %s %s | %+6.2f %+6.2f %+6.2f | %s %+6.2f  | %s\n", $1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12 }' "$dat"
+    awk '!/^#/ { rest = $13 <= 1e-6 ? " " : "*"; if (rest == "*") n++
+                 printf "%-5s W/%-3s %-6s | %s %s %s | %+6.2f %+6.2f %+6.2f%s| %s %+6.2f  | %s\n", $1, $2, $3, $4, $5, $6, $7, $8, $9, rest, $10, $11, $12 }
+         END { if (n) print "* CRAMP run not at rest (KE/SE > 1e-6, its loaded row crossed a cell line): its bounds are open" }' "$dat"
     echo
     echo "== Limits: CRAMP's first-order Richardson limit 2 F(h) - F(2h) of the two finest, the order the three show;"
     echo "   XEFG's Aitken limit of its three"
-    awk '/^# richardson/ { printf "CRAMP a/W %.2f, %.1f mm: F = %.5f, %+.2f %% of Brown-Srawley (%+.2f %% of Tada), order %.2f\n", $3, $4, $5, $7, $8, $9 }' "$RUNS/cramp.dat"
+    awk '/^# richardson/ { printf "CRAMP a/W %.2f, %.1f mm: F = %.5f, %+.2f %% of Brown-Srawley (%+.2f %% of Tada), order %s\n", $3, $4, $5, $7, $8,
+                                  ($9 ~ /nan/ ? "none (the changes differ in sign)" : sprintf("%.2f", $9)) }' "$RUNS/cramp.dat"
     for r in 0.3 0.45 0.6; do
         sed -n "s/^# Aitken limit \([0-9.]*\) (\(.*\) of the handbook)/XEFG  a\/W $r: F = \1, \2 of Brown-Srawley/p" "$RUNS/xefg-$r.dat"
     done
