@@ -245,7 +245,7 @@ tsan: deps
 # ---- book, figures, bench ----------------------------------------------------
 # the chapters show these figures (about thirty-two minutes to draw, and
 # fig-growth's four to eight more, fig-kalthoff's four, fig-shapes'
-# five, fig-k-edge's nine of CPU, on a shared two-core machine) and
+# five, fig-k-edge's ten, on a shared two-core machine) and
 # include the tables their scripts write (build/figures/*.txt, on doxygen's
 # EXAMPLE_PATH: a missing one is a warning, so an error)
 DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-petersson fig-slide fig-growth fig-kalthoff fig-shapes fig-k-edge,$(notdir $(wildcard figures/fig*)))
