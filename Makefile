@@ -245,10 +245,10 @@ tsan: deps
 # ---- book, figures, bench ----------------------------------------------------
 # the chapters show these figures (about thirty-two minutes to draw, and
 # fig-growth's four to eight more, fig-kalthoff's four, fig-shapes'
-# five, on a shared two-core machine) and
+# five, fig-k-edge's ten, on a shared two-core machine) and
 # include the tables their scripts write (build/figures/*.txt, on doxygen's
 # EXAMPLE_PATH: a missing one is a warning, so an error)
-DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-petersson fig-slide fig-bars fig-growth fig-kalthoff fig-shapes,$(notdir $(wildcard figures/fig*)))
+DOC_FIGURES := $(filter fig1 fig1b fig2 fig-patch fig3 fig4 fig5 fig6 fig6-onefield fig-crossing fig-tip fig-tradeoff fig-stability fig-xefg-k fig-xefg-dcb fig-petersson fig-slide fig-bars fig-growth fig-kalthoff fig-shapes fig-k-edge,$(notdir $(wildcard figures/fig*)))
 # MathJax is copied into the book (not linked), so that it can be moved or
 # served as it is; its sources (unpacked), tests and combined configurations
 # are left out
@@ -323,6 +323,8 @@ FIG_USES_fig-xefg-dcb := figures/fig1/dcb_full.cfg tests/support/q4.h \
 FIG_OUT_fig-petersson := fig-petersson.png fig-petersson.txt
 FIG_RUN_fig-petersson := build/stage6/mpm
 FIG_USES_fig-petersson := tests/6-xefg/scenes/petersson.cfg tests/6-xefg/scenes/petersson_grow.cfg
+FIG_OUT_fig-k-edge := fig-k-edge.png fig-k-edge.txt
+FIG_RUN_fig-k-edge := build/stage7/tests/7-fracture/scene_k_edge build/stage6/tests/6-xefg/scene_edge_crack
 FIG_OUT_fig-growth := fig-growth.png fig-growth.txt
 FIG_RUN_fig-growth := build/stage7/mpm build/stage7/tests/support/q4.o
 FIG_USES_fig-growth := tests/7-fracture/scenes/kalthoff_half.cfg tests/support/q4.h
