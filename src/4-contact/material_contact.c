@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "contact_law.h"
+#include "contact_regression.h"
 #include "checkpoint.h"
 #include "contact_stencil.h"
 #include "material_contact.h"
@@ -37,7 +38,10 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     M->geometry_step = -1;
     if (M->shift < 0 || fields_enable(sim) || !M->cell_groups || !M->mixed ||
         !M->near || !M->area || !M->cx || !M->cy ||
-        contact_decision_alloc(&M->decision, nn)) {
+        contact_decision_alloc(&M->decision, nn) ||
+        (M->normal == NORMAL_REGRESSION &&
+         (!(M->fit = calloc((size_t)nn * REGRESSION_DOUBLES, sizeof(double))) ||
+          !(M->fit_pair = calloc((size_t)nn * 2, sizeof(int)))))) {
         snprintf(err, errlen, "%s: out of memory (or field-key bits) for "
                  "contact between bodies", sim->scene.file);
         return -1;
@@ -304,7 +308,73 @@ static void candidate_axes(Sim *sim, MaterialContact *M, int n)
     int ok = contact_interface_normal(ga, gb, c);
     cx[2] = ok ? c[0] : 0.0;
     cy[2] = ok ? c[1] : 0.0;
+    if (M->fit) {                               /* the pair to fit, from w = 0 */
+        M->fit_pair[2 * n] = a;
+        M->fit_pair[2 * n + 1] = b;
+        memset(&M->fit[REGRESSION_DOUBLES * n], 0, sizeof(double) * 3);
+    }
 }
+
+/// [regression_fit]
+/** Point @p p's share of a pass of regression_fit(), at the nodes of
+ *  @p own (NULL: all): a point of a node's first fitted field adds with
+ *  the label 0, one of its second with 1, weighted by S_ip, at its
+ *  position from the node in units of h = sqrt(dx dy). */
+static inline __attribute__((always_inline)) void
+fit_point(Sim *sim, void *state, int p, const Owned *own)
+{
+    MaterialContact *M = state;
+    const FieldTable *F = &sim->fields;
+    const Grid *g = &sim->grid;
+    int node[STENCIL_NODES];
+    Stencil st;
+    double half[2], area, h = sqrt(g->dx * g->dy);
+    if (!point_near(sim, M, p, node, &st, half, &area))
+        return;
+    for (int a = 0; a < STENCIL_NODES; a++) {
+        int n = node[a], s = st.slot[a];
+        if (F->first[n] < 0 || st.S[a] <= 0.0 || !owns(g, own, n))
+            continue;
+        const int *pair = &M->fit_pair[2 * n];
+        if (pair[0] == pair[1] || (s != pair[0] && s != pair[1]))
+            continue;                           /* one field, or a third */
+        regression_add(&M->fit[REGRESSION_DOUBLES * n],
+                       (sim->pts.x[p] - grid_node_x(g, n)) / h,
+                       (sim->pts.y[p] - grid_node_y(g, n)) / h, st.S[a],
+                       s == pair[1]);
+    }
+}
+
+/** Task 2, NORMAL_REGRESSION: REGRESSION_NEWTON Newton steps of each
+ *  node's fit, each from one pass over the points near the nodes (on
+ *  threads by strips); the fitted normal then takes the place of the
+ *  gradients' average among the node's candidates (pair_axis() keeps the
+ *  one along which the pair lies farthest apart). */
+static void regression_fit(Sim *sim, MaterialContact *M)
+{
+    const FieldTable *F = &sim->fields;
+    for (int it = 0; it < REGRESSION_NEWTON; it++) {
+        for (int k = 0; k < F->ntouched; k++)
+            regression_clear(&M->fit[REGRESSION_DOUBLES * F->touched[k]]);
+        if (sim->strips.n > 0)
+            strip_scatter(sim, fit_point, M);
+        else
+            for (int p = 0, np = sim->pts.n; p < np; p++)
+                fit_point(sim, M, p, NULL);
+        for (int k = 0; k < F->ntouched; k++)
+            regression_newton(&M->fit[REGRESSION_DOUBLES * F->touched[k]]);
+    }
+    for (int k = 0; k < F->ntouched; k++) {
+        int n = F->touched[k];
+        double c[2];
+        if (M->fit_pair[2 * n] == M->fit_pair[2 * n + 1] ||
+            !regression_normal(&M->fit[REGRESSION_DOUBLES * n], c))
+            continue;                           /* keep the gradients' */
+        M->cx[CONTACT_AXES * n + 2] = c[0];    /* in place of the average */
+        M->cy[CONTACT_AXES * n + 2] = c[1];
+    }
+}
+/// [regression_fit]
 
 /// [interface_reach]
 /** Point @p p's share of interface_reach(), at the nodes of @p own (NULL:
@@ -401,6 +471,8 @@ static int interface_geometry(Sim *sim, MaterialContact *M)
         if (M->reach)
             candidate_axes(sim, M, n);
     }
+    if (M->fit)
+        regression_fit(sim, M);
     if (M->reach)
         interface_reach(sim, M);
     mark_cells_around(M->near, F, g->nnx, 0);   /* clean for the next step */

@@ -24,12 +24,21 @@ struct SceneReader;
 
 /** Candidate directions of an interface at a node: the outward normal
  *  of its field of largest area, the inward normal of the next, and their
- *  average (contact_interface_normal()). */
+ *  average (contact_interface_normal()), or, with contact.normal =
+ *  "regression", the normal of the line fitted between the two fields'
+ *  points in its place (contact_regression.h). */
 #define CONTACT_AXES 3
 
 /** Most contact groups a scene may name in its pairs (the group's part of
  *  the field key is 5 bits; group 0 is every group no pair names). */
 #define CONTACT_GROUPS_MAX 31
+
+/** The normal of two bodies at a node (the pairs' contact.normal). */
+typedef enum ContactNormal {
+    NORMAL_GRADIENTS,     /**< the candidates from the mass gradients */
+    NORMAL_REGRESSION     /**< the line fitted between the two clouds of
+                               points (contact_regression.h) */
+} ContactNormal;
 
 /// [material_contact_state]
 /** Stage 4's state for contact between bodies. */
@@ -63,6 +72,11 @@ typedef struct MaterialContact {
     int reach;            /**< a pair detects by a gap: the candidates and
                                reaches are found (else the normal is
                                contact_interface_normal()'s) */
+    ContactNormal normal; /**< the scene's normal (one for all pairs) */
+    double *fit;          /**< NORMAL_REGRESSION: per node,
+                               REGRESSION_DOUBLES: the fit and its sums */
+    int *fit_pair;        /**< NORMAL_REGRESSION: per node, the slots of
+                               the two fields fitted (labels 0 and 1) */
     ContactDecision decision; /**< the pairs in contact at Task 4 */
     long geometry_step;   /**< the step whose geometry is found (-1: none) */
     int cap;              /**< slots of gx, gy, va, lo, hi */

@@ -106,7 +106,38 @@ static int read_pair(SceneReader *r, const config_setting_t *e,
 
 const char *const material_contact_keys[] = {"pair", "law", "mu", "detection",
                                              "gap_tolerance", "V_sep",
-                                             "V_contact", NULL};
+                                             "V_contact", "normal", NULL};
+
+/// [contact_normal_read]
+/** Read entry @p e's "normal" (of law @p law) into @p M (the first
+ *  entry's, or the default "gradients", binds the others: the normal is
+ *  the node's, one for all pairs). */
+static int read_normal(SceneReader *r, const config_setting_t *e, int k,
+                       const ContactLaw *law, MaterialContact *M)
+{
+    const char *name = NULL;
+    if (scene_string(r, e, "normal", 0, &name) < 0)
+        return -1;
+    ContactNormal v = NORMAL_GRADIENTS;
+    if (name && strcmp(name, "regression") == 0)
+        v = NORMAL_REGRESSION;
+    else if (name && strcmp(name, "gradients") != 0)
+        return scene_error(r, config_setting_get_member(e, "normal"), "normal",
+                           "\"%s\": expected \"gradients\" or \"regression\"",
+                           name);
+    if (v == NORMAL_REGRESSION && law->detect != DETECT_GAP)
+        return scene_error(r, config_setting_get_member(e, "normal"), "normal",
+                           "\"regression\" needs detection \"gap\" (the fit "
+                           "joins the candidates, and the gap chooses)");
+    if (k == 0)
+        M->normal = v;
+    else if (v != M->normal)
+        return scene_error(r, config_setting_get_member(e, "normal"), "normal",
+                           "\"%s\" here but not in the first pair: the normal "
+                           "is the node's, one for all pairs", name ? name : "gradients");
+    return 0;
+}
+/// [contact_normal_read]
 
 /// [material_contact_read]
 int material_contact_read(Sim *sim, const config_setting_t *s, int index,
@@ -140,7 +171,7 @@ int material_contact_read(Sim *sim, const config_setting_t *s, int index,
             break;
         }
         rc = scene_check_keys(r, e, material_contact_keys) || read_pair(r, e, names) ||
-             contact_law_read(r, e, 0, &read[k]);
+             contact_law_read(r, e, 0, &read[k]) || read_normal(r, e, k, &read[k], M);
         double cell = sim->scene.dx < sim->scene.dy ? sim->scene.dx : sim->scene.dy;
         if (!rc && read[k].detect == DETECT_GAP && !(read[k].gap_tolerance < cell))
             rc = scene_error(r, config_setting_get_member(e, "gap_tolerance"),
@@ -214,5 +245,7 @@ void material_contact_release(void *state)
     free(M->hi);
     free(M->cx);
     free(M->cy);
+    free(M->fit);
+    free(M->fit_pair);
     free(M);
 }

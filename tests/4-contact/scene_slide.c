@@ -85,7 +85,8 @@
  *
  * Environment: SLIDE_TABLE, a folder: each run writes there
  * slide_t<theta>_mu<mu>_h<h>.dat (columns t, s, s_exact, y_c - y_c(0),
- * interface slip, every step) for make fig-slide.
+ * interface slip, every step) for make fig-slide. SLIDE_NORMAL, a
+ * contact.normal ("regression"): every run uses it (chapter 4b).
  */
 #include "testkit.h"
 
@@ -212,6 +213,9 @@ static SlideRun slide(double theta, double mu, double h, double T, double v0)
     }
     if (v0 > 0)
         snprintf(ov[n++], sizeof ov[0], "bodies.[%d].velocity=[%.17e, 0.0]", BLOCK, v0);
+    const char *normal = getenv("SLIDE_NORMAL");   /* contact.normal (chapter 4b) */
+    if (normal && *normal)
+        snprintf(ov[n++], sizeof ov[0], "contact.[0].normal=\"%s\"", normal);
     const char *overrides[9];
     for (int k = 0; k < n; k++)
         overrides[k] = ov[k];
