@@ -73,6 +73,7 @@ typedef struct MaterialContact {
                                reaches are found (else the normal is
                                contact_interface_normal()'s) */
     ContactNormal normal; /**< the scene's normal (one for all pairs) */
+    int normal_line;      /**< line of the first pair's normal (0: none) */
     double *fit;          /**< NORMAL_REGRESSION: per node,
                                REGRESSION_DOUBLES: the fit and its sums */
     int *fit_pair;        /**< NORMAL_REGRESSION: per node, the slots of

@@ -129,8 +129,11 @@ static int read_normal(SceneReader *r, const config_setting_t *e, int k,
         return scene_error(r, config_setting_get_member(e, "normal"), "normal",
                            "\"regression\" needs detection \"gap\" (the fit "
                            "joins the candidates, and the gap chooses)");
-    if (k == 0)
+    if (k == 0) {
         M->normal = v;
+        const config_setting_t *n = config_setting_get_member(e, "normal");
+        M->normal_line = n ? (int)config_setting_source_line(n) : 0;
+    }
     else if (v != M->normal)
         return scene_error(r, config_setting_get_member(e, "normal"), "normal",
                            "\"%s\" here but not in the first pair: the normal "

@@ -12,6 +12,7 @@
 #include "cpdi.h"
 #include "gimp.h"
 #include "j_integral.h"
+#include "material_contact.h"
 #include "step.h"
 
 /** The first point whose domain is not inside the grid, or -1; its
@@ -70,6 +71,16 @@ int shapes_prepare(Sim *sim, void *state, char *err, size_t errlen)
                                     SCENE_AT_LEN), k, name);
             return -1;
         }
+    const MaterialContact *M = sim_state(sim, "material contact");
+    if (M && M->normal == NORMAL_REGRESSION) {  /* its fit: a linear stencil */
+        char where[SCENE_AT_LEN];
+        snprintf(err, errlen, "%s: contact normal = \"regression\" with "
+                 "run.shape = \"%s\": the fit reads the four nodes of a "
+                 "linear stencil: use normal = \"gradients\" (the default)",
+                 scene_lines_at(sc->lines, sc->file, M->normal_line, where,
+                                SCENE_AT_LEN), name);
+        return -1;
+    }
     if (sc->run.shape == &shape_cpdi)
         return cpdi_prepare(sim, err, errlen);
     int p = domain_outside(sim, &at);
