@@ -13,6 +13,7 @@
 #define MPM_CONTACT_STENCIL_H
 
 #include "stencil.h"
+#include "strip_scatter.h"
 
 /// [contact_stencil]
 /** @brief Point @p p's stencil for contact, when one of its nodes carries
@@ -47,5 +48,19 @@ contact_stencil(const Sim *sim, StencilFn wide, int p, int node[STENCIL_MAX],
     return st->n = STENCIL_NODES;
 }
 /// [contact_stencil]
+
+/** @brief A wide-stencil scatter of contact (chapter 8): @p fn for every
+ *         point, on the strips of Task 0 when there are some, else on one
+ *         thread in point order (own NULL). Each scatter calls it from a
+ *         function of its own, so that @p fn is inlined there. */
+static inline __attribute__((always_inline)) void
+contact_scatter_wide(Sim *sim, StripPointFn fn, void *ctx)
+{
+    if (sim->strips.n > 0)
+        strip_scatter(sim, fn, ctx);
+    else
+        for (int p = 0, np = sim->pts.n; p < np; p++)
+            fn(sim, ctx, p, NULL);
+}
 
 #endif

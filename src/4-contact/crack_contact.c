@@ -135,11 +135,7 @@ volume_point_wide(Sim *sim, void *state, int p, const Owned *own)
 /** The wide stencils' scatter, compiled on its own (chapter 8). */
 static __attribute__((noinline)) void volumes_wide(Sim *sim, ContactState *S)
 {
-    if (sim->strips.n > 0)
-        strip_scatter(sim, volume_point_wide, S);
-    else
-        for (int p = 0, np = sim->pts.n; p < np; p++)
-            volume_point_wide(sim, S, p, NULL);
+    contact_scatter_wide(sim, volume_point_wide, S);
 }
 
 /** Eq. 8-9 at the nodes that carry extra fields this step (the only ones

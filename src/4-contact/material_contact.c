@@ -257,11 +257,7 @@ gradient_point_wide(Sim *sim, void *state, int p, const Owned *own)
 /** The wide stencils' gradients, compiled on their own (chapter 8). */
 static __attribute__((noinline)) void gradients_wide(Sim *sim, MaterialContact *M)
 {
-    if (sim->strips.n > 0)
-        strip_scatter(sim, gradient_point_wide, M);
-    else
-        for (int p = 0, np = sim->pts.n; p < np; p++)
-            gradient_point_wide(sim, M, p, NULL);
+    contact_scatter_wide(sim, gradient_point_wide, M);
 }
 
 /** Task 2, first pass: at the nodes with several fields, each field's mass
@@ -423,11 +419,7 @@ reach_point_wide(Sim *sim, void *state, int p, const Owned *own)
 /** The wide stencils' reaches, compiled on their own (chapter 8). */
 static __attribute__((noinline)) void reaches_wide(Sim *sim, MaterialContact *M)
 {
-    if (sim->strips.n > 0)
-        strip_scatter(sim, reach_point_wide, M);
-    else
-        for (int p = 0, np = sim->pts.n; p < np; p++)
-            reach_point_wide(sim, M, p, NULL);
+    contact_scatter_wide(sim, reach_point_wide, M);
 }
 
 /** Task 2, second pass: how far each field's points reach along each
