@@ -55,10 +55,20 @@
 #                         set-up, no final output), steps = N; both empty
 #                         when the line is missing (a run that stopped).
 #   fig_unstable LOG      from the solver's first "mpm: unstable at step N
-#                         (t = T UNIT): ..." line sets unstable_msg (the
-#                         line), unstable_t (T, a number in the scene's time
-#                         unit) and why ("unstable at T UNIT"); all three
-#                         empty when there is no such line.
+#                         (t = T UNIT): ..." line (or "stopped at step",
+#                         a run a rule ended: step_stop()) sets
+#                         unstable_msg (the line), unstable_t (T, a number
+#                         in the scene's time unit) and why ("unstable at
+#                         T UNIT" or "stopped at T UNIT"); all three empty
+#                         when there is no such line.
+#
+# Runs in the background
+#   fig_job NAME SCENE [OVERRIDE...]
+#                         fig_try into $RUNS/NAME in the background, at
+#                         most $JOBS at a time, writing "rc secs loop
+#                         steps" to $RUNS/NAME.rc; with REUSE=1 a run that
+#                         has its .rc already is not made again. The
+#                         caller waits for them (wait).
 #
 # Timing and the machine
 #   fig_now               prints the clock, in ns (date +%s%N).
@@ -107,9 +117,18 @@ fig_loop() {
 }
 
 fig_unstable() {
-    unstable_msg=$(grep -m 1 'unstable at step [0-9]* (t = ' "$1" 2>/dev/null) || true
-    unstable_t=$(sed -nE 's/.*unstable at step [0-9]+ \(t = ([0-9.eE+-]+) [^)]*\).*/\1/p' <<<"$unstable_msg")
-    why=$(sed -nE 's/.*unstable at step [0-9]+ \(t = ([0-9.eE+-]+) ([^)]*)\).*/unstable at \1 \2/p' <<<"$unstable_msg")
+    unstable_msg=$(grep -m 1 -E '(unstable|stopped) at step [0-9]* \(t = ' "$1" 2>/dev/null) || true
+    unstable_t=$(sed -nE 's/.*(unstable|stopped) at step [0-9]+ \(t = ([0-9.eE+-]+) [^)]*\).*/\2/p' <<<"$unstable_msg")
+    why=$(sed -nE 's/.*(unstable|stopped) at step [0-9]+ \(t = ([0-9.eE+-]+) ([^)]*)\).*/\1 at \2 \3/p' <<<"$unstable_msg")
+}
+
+fig_job() {
+    local name=$1
+    shift
+    [ "${REUSE:-0}" = 1 ] && [ -f "$RUNS/$name.rc" ] && return 0
+    while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done
+    ( fig_try "$RUNS/$name" "$@"
+      echo "$rc $secs ${loop:-} ${steps:-}" >"$RUNS/$name.rc" ) &
 }
 
 fig_try() {

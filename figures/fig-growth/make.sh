@@ -87,16 +87,8 @@ cc -std=c11 -Wall -Wextra -Werror -Wshadow -Wmissing-prototypes -Wundef \
     build/stage7/tests/support/q4.o -llapacke -lm -o "$FEA" || exit 1
 
 # ---- the runs, JOBS at a time ----------------------------------------------
-# job NAME SCENE [OVERRIDE...]: runs $MPM in the background into
+# fig_job NAME SCENE [OVERRIDE...]: runs $MPM in the background into
 # $RUNS/NAME (fig_try), its status and times to $RUNS/NAME.rc
-job() {
-    local name=$1
-    shift
-    [ "${REUSE:-0}" = 1 ] && [ -f "$RUNS/$name.rc" ] && return 0
-    while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done
-    ( fig_try "$RUNS/$name" "$@"
-      echo "$rc $secs ${loop:-} ${steps:-}" >"$RUNS/$name.rc" ) &
-}
 # the status of run NAME: sets rc, secs, loop, steps; a run that failed
 # (not 0, not 3) stops the figure
 result() {
@@ -113,15 +105,15 @@ done
 # the longest first (XEFG's grown plate, its finest DCB), so that the
 # cores stay busy
 for ft in $(printf '%s\n' $KX_FT | sort -g); do
-    job "kw-xefg-$ft" figures/fig-growth/kalthoff_xefg.cfg "cracks.[0].cohesive.f_t=$ft" \
+    fig_job "kw-xefg-$ft" figures/fig-growth/kalthoff_xefg.cfg "cracks.[0].cohesive.f_t=$ft" \
         run.snapshots=18 "run.time=$KX_TIME"
 done
 for h in $(printf '%s\n' $XEFG_H | sort -g); do
-    job "dcb-xefg-$h" "$RUNS/dcb_xefg_$h.cfg" run.history_every=5
+    fig_job "dcb-xefg-$h" "$RUNS/dcb_xefg_$h.cfg" run.history_every=5
 done
-job kw-mpm tests/7-fracture/scenes/kalthoff_half.cfg run.snapshots=18 "run.time=$KX_TIME"
+fig_job kw-mpm tests/7-fracture/scenes/kalthoff_half.cfg run.snapshots=18 "run.time=$KX_TIME"
 for h in $MPM_H; do
-    job "dcb-mpm-$h" "$RUNS/dcb_mpm_$h.cfg" run.history_every=5
+    fig_job "dcb-mpm-$h" "$RUNS/dcb_mpm_$h.cfg" run.history_every=5
 done
 # the FEA: the end at x = 0 (CRAMP) and at h/2 (XEFG)
 for xl in 0 $(for h in $XEFG_H; do awk -v h="$h" 'BEGIN { print h / 2 }'; done); do
@@ -219,7 +211,7 @@ for name in kw-mpm $(for ft in $KX_FT; do echo "kw-xefg-$ft"; done); do
     if [ "$rc" = 3 ]; then      # its outputs so far are kept, and listed
         fig_unstable "$RUNS/$name.log"
         note=${why:-unstable}
-        steps=$(sed -nE 's/.*unstable at step ([0-9]+) .*/\1/p' "$RUNS/$name.log" | head -n 1)
+        steps=$(sed -nE 's/.*(unstable|stopped) at step ([0-9]+) .*/\2/p' "$RUNS/$name.log" | head -n 1)
         loop=$secs
     fi
     # the first event (t, microseconds) and the events at the end

@@ -54,17 +54,9 @@ h1.25:1.25:tests/6-xefg/scenes/kalthoff_coarse.cfg:
 h1.667:1.66667:tests/6-xefg/scenes/kalthoff_h1_667.cfg:
 h2.5:2.5:figures/fig-kalthoff/kalthoff_h2_5.cfg:"
 
-# job NAME SCENE [OVERRIDE...]: $MPM in the background into $RUNS/NAME
-job() {
-    local name=$1
-    shift
-    [ "${REUSE:-0}" = 1 ] && [ -f "$RUNS/$name.rc" ] && return 0
-    while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n || true; done
-    ( fig_try "$RUNS/$name" "$@"
-      echo "$rc $secs ${loop:-} ${steps:-}" >"$RUNS/$name.rc" ) &
-}
+# fig_job NAME SCENE [OVERRIDE...]: $MPM in the background into $RUNS/NAME
 while IFS=: read -r name h scene over; do
-    job "$name" "$scene" "run.time=$KX_TIME" run.snapshots=1 run.history_every=1 $over
+    fig_job "$name" "$scene" "run.time=$KX_TIME" run.snapshots=1 run.history_every=1 $over
 done <<<"$SPECS"
 wait
 
