@@ -151,6 +151,13 @@ static int mirror_step(Sim *sim, void *state, Seam seam)
 }
 /// [mirror_step]
 
+/** The node on grid line @p j along the normal @p axis, position @p i
+ *  along the plane. */
+static int node_at(const Grid *g, int axis, int j, int i)
+{
+    return axis ? j * g->nnx + i : i * g->nnx + j;
+}
+
 /** Refuse the mirror where it cannot apply (a message naming the key's
  *  line in @p err): -1, else 0. */
 static int refuse(const Sim *sim, const Mirror *M, char *err, size_t errlen)
@@ -251,28 +258,25 @@ static int mirror_prepare(Sim *sim, void *state, char *err, size_t errlen)
         snprintf(err, errlen, "%s: out of memory (mirror)", sim->scene.file);
         return -1;
     }
-    /* the node of line j (normal) and position i (along) */
-#define MIRROR_NODE(j, i) (M->axis ? (j) * g->nnx + (i) : (i) * g->nnx + (j))
     double tol = 1e-9 * dt;
     for (int nd = 0; nd < g->nnodes; nd++)
         M->pair_of[nd] = -1;
     for (int i = 0; i < along; i++) {
         double t = ot + i * dt;
         if (t >= M->lo - tol && t <= M->hi + tol) {      /* on the plane */
-            M->ghost[M->n] = M->node[M->n] = MIRROR_NODE(k0, i);
+            M->ghost[M->n] = M->node[M->n] = node_at(g, M->axis, k0, i);
             M->n++;
         }
         /* beyond: every node a pair through the segment reaches (a point
            reaches 1 + l <= 1.5 cells along the plane: two cells) */
         if (t >= M->lo - 2.0 * dt - tol && t <= M->hi + 2.0 * dt + tol) {
-            M->ghost[M->n] = MIRROR_NODE(k0 - M->side, i);
-            M->node[M->n] = MIRROR_NODE(k0 + M->side, i);
+            M->ghost[M->n] = node_at(g, M->axis, k0 - M->side, i);
+            M->node[M->n] = node_at(g, M->axis, k0 + M->side, i);
             g->fixed[M->ghost[M->n]] = g->fixed[M->node[M->n]];
             M->pair_of[M->ghost[M->n]] = M->n;
             M->n++;
         }
     }
-#undef MIRROR_NODE
     const FieldKey *side = hooks_find_field_key(&sim->hooks, "mirror side");
     M->key = side ? 1u << side->shift : 0u;
     if (!side || fields_enable(sim)) {
