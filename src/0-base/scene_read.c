@@ -785,11 +785,14 @@ static int read_boundaries(Sim *sim, SceneReader *r, const config_setting_t *roo
         const config_setting_t *g = config_setting_get_elem(l, (unsigned)k);
         Boundary *B = &sc->bc[k];
         B->line = (int)config_setting_source_line(g);
-        if (scene_check_keys(r, g, scene_hold_keys) ||
+        if (scene_check_open_keys(r, &sim->hooks, "boundaries", g,
+                                  scene_hold_keys, NULL) ||
             scene_shape(r, g, &B->region) < 0 ||
             read_hold(r, g, NULL, 0, &B->hold))
             return -1;
         B->moving = B->hold.vx != 0.0 || B->hold.vy != 0.0;
+        if (scene_read_open_keys(sim, r, "boundaries", g, k))  /* stage 8's mirror */
+            return -1;
     }
     return 0;
 }

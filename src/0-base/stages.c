@@ -90,6 +90,7 @@ void mpm_install_stages(Hooks *h)
     hooks_add_refusal(h, "run.shape", "gimp", "stage 8 (GIMP and CPDI shape functions)");
     hooks_add_refusal(h, "run.shape", "cpdi", "stage 8 (GIMP and CPDI shape functions)");
     hooks_add_refusal(h, "run.transfer", NULL, "stage 8 (the APIC transfer)");
+    hooks_add_refusal(h, "boundaries.mirror", NULL, "stage 8 (a mirror for GIMP and CPDI)");
 #endif
     hooks_begin_stage(h, 99);    /* a test's plug-in comes after every stage */
 }
