@@ -101,6 +101,7 @@ static const char *const elsewhere[][2] = {
     {"tests/7-fracture/scenes/inclined_growth.cfg", "cracks.growth is stage 7's"},
     {"tests/7-fracture/scenes/kalthoff_half.cfg", "cracks.growth is stage 7's"},
     {"tests/8-shapes/scenes/cpdi_stretch.cfg", "run.shape = \"cpdi\" is stage 8's"},
+    {"tests/8-shapes/scenes/cpdi_invert.cfg", "run.shape = \"cpdi\" is stage 8's"},
 };
 
 static const char *const schemes[] = {"usl", "musl", "usf"};

@@ -172,12 +172,36 @@ static void a_domain_wider_than_a_cell_stops_the_run(void **state)
     tk_free(sim);
 }
 
+/** A domain squeezed inside out in one step (cpdi_invert.cfg: dt L_xx about
+ *  -2) stops the run at that step, naming the point and det F < 0. */
+static void an_inverted_domain_stops_the_run(void **state)
+{
+    (void)state;
+    char err[512];
+    Sim *sim = tk_load_file("tests/8-shapes/scenes/cpdi_invert.cfg", NULL);
+    long k = 0;
+    int rc = 0;
+    while (k < sim->nsteps && (rc = sim_advance(sim)) == 0)
+        k++;
+    snprintf(err, sizeof err, "step %ld, point %d: %s", sim->fail.step,
+             sim->fail.particle, sim->fail.quantity ? sim->fail.quantity : "-");
+    printf("  squeezed at 0.1/ms, cfl 3: stopped at %s = %.4f after %ld whole steps\n",
+           err, sim->fail.value, k);
+    assert_int_not_equal(rc, 0);
+    assert_non_null(strstr(err, "CPDI domain (inverted: det F)"));
+    assert_true(sim->fail.value < 0.0);
+    assert_int_equal(k, 0);
+    assert_true(sim->fail.particle >= 0);
+    tk_free(sim);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(partition_of_unity_and_linear_reproduction),
         cmocka_unit_test(inside_one_cell_it_is_linear),
         cmocka_unit_test(a_domain_wider_than_a_cell_stops_the_run),
+        cmocka_unit_test(an_inverted_domain_stops_the_run),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
