@@ -9,13 +9,13 @@
 # (K_EDGE_SIGMA; make check's runs take 1 MPa): the handbook's K is linear
 # elasticity's, and MPM's K_I / sigma is the linear one only while the
 # points keep their cells; at 1 MPa the plate at a/W = 0.6 on W/80 moves by
-# up to 0.8 of a cell and 23008 of its 51520 points change cell (chapter 7,
-# "a/W = 0.6 on W/80"); at 0.1 MPa none does on W/20 to W/80.  The CRAMP
-# test asserts the issue's
-# bounds on its finest cells (K_I within 3 % of Brown-Srawley on every
-# domain and a/W, the error falling with the cell, |K_II/K_I| <= 1 %, each
-# run at rest, KE/SE <= 1e-6, open where its loaded rows crossed a cell
-# line: the test says so); this script fails when it fails.  XEFG's test
+# up to 0.8 of a cell and 23006 of its 51520 points change cell (chapter 7,
+# "At full load the points change cell"); at 0.1 MPa none does on W/20 to
+# W/80.  The CRAMP test asserts the issue's bounds on its finest cells
+# (K_I within 3 % of Brown-Srawley on every domain and a/W, the error
+# falling with the cell, |K_II/K_I| <= 1 %, each run at rest, KE/SE <=
+# 1e-6, open where its loaded rows crossed a cell line: the test says so);
+# this script fails when it fails.  XEFG's test
 # asserts xefg.md Test 3's bounds, written for a/W = 0.45: its status at
 # each a/W is printed, and fails the figure at 0.45 only.
 # Writes build/figures/fig-k-edge.png (|error| against the cell, log-log)

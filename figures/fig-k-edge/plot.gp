@@ -6,7 +6,7 @@
 # gnuplot -e.
 set terminal pngcairo size 1200,680 font ",12" noenhanced
 set output out
-set title "Edge crack in tension (W x H = 10 x 20 mm, plane strain): |K_I error| against Brown-Srawley\nCRAMP (tip mid-cell, sigma = ".sigma." MPa, interaction integral on 1 and 2 mm domains) and XEFG (LEFM tip, ring 1.5-3 mm)"
+set title "Edge crack in tension (W x H = 10 x 20 mm, plane strain): |K_I error| against Brown-Srawley\nCRAMP (tip mid-cell, sigma = ".sigma." MPa, domains of 1 and 2 mm) and XEFG (LEFM tip, ring 1.5-3 mm)"
 set xlabel "cell size / point spacing h (mm), W = 10 mm"
 set ylabel "|K_I / K_I(handbook) - 1| (%)"
 set logscale xy

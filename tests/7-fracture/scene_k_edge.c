@@ -38,7 +38,7 @@
  * H = 2 W and 4 W). At a/W = 0.6 on W/80 at sigma = 1 MPa the plate
  * stretches there by more than 3h/4 and the row crosses the next line
  * after all: that run stops at 2.6e-5, K_I 4.8 to 5.5 % high. The rows
- * are not the cause: 23008 of its 51520 points are in another cell at
+ * are not the cause: 23006 of its 51520 points are in another cell at
  * the stop than at the start (column moved), the tip has moved by -0.47
  * cells (tip dx), and an unloaded row beyond the loaded one changes
  * neither K_I nor the rest (chapter 7). The handbook's K is linear
