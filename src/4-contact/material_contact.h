@@ -56,6 +56,12 @@ typedef struct MaterialContact {
                                set when a point of group g is in it */
     unsigned char *mixed; /**< per node: points of several groups reach it */
     unsigned char *near;  /**< per cell: a corner has several fields */
+    unsigned char *keyed; /**< per point: bit a set when Task 1 keys its
+                               corner a with its group (found on threads,
+                               keyed on one in point order) */
+    double *node_work;    /**< per touched node (FieldTable::touched
+                               order): the work of its pairs at Task 4,
+                               added to @c work in node order */
     double *gx;           /**< per slot: mass gradient x (at nodes with
                                several fields) */
     double *gy;           /**< per slot: mass gradient y */

@@ -240,6 +240,8 @@ void material_contact_release(void *state)
     free(M->cell_groups);
     free(M->mixed);
     free(M->near);
+    free(M->keyed);
+    free(M->node_work);
     free(M->gx);
     free(M->gy);
     free(M->area);
