@@ -227,6 +227,11 @@ int cracks_prepare(Sim *sim, void *state, char *err, size_t errlen)
         }
     }
     C->reach = sc->run.shape && sc->run.shape->nodes > STENCIL_NODES;
+    if (!(C->pair_field = malloc((size_t)sim->fields.width *     /* Task 1 */
+                                 (size_t)(sim->pts.n + 1)))) {
+        snprintf(err, errlen, "%s: cracks: out of memory for Task 1", sc->file);
+        return -1;
+    }
     if (C->search->update && C->search->update(C, &sim->grid)) {
         snprintf(err, errlen, "%s: cracks: out of memory for the crossing "
                  "search \"%s\"", sc->file, C->search->name);
@@ -245,5 +250,7 @@ void cracks_release(void *state)
         free(C->crack[k].y);
     }
     free(C->crack);
+    free(C->pair_field);
+    free(C->pair_hit);
     free(C);
 }
