@@ -3,6 +3,7 @@
  * @brief Task 1 with cracks: the crack side of every particle-node pair
  *        that crosses a crack, as stage 2's part of the field key (eq. 2).
  */
+#include <omp.h>
 #include <stdlib.h>
 
 #include "cracks.h"
@@ -22,50 +23,62 @@ static int cracks_tell_crossed(Sim *sim, const Cracks *C, int p, int a,
 /** Task 1 over the pairs of every point near a crack, through run.shape's
  *  stencil function @p wide, or NULL for the cell's four nodes, in rows of
  *  @p w pairs (a constant STENCIL_NODES when linear): each pair's field on
- *  threads (a point writes its own Cracks::pair_field), then the keys and
- *  the subscribers on one thread in point order, so that the rows and
- *  slots come in the order they have on one. */
+ *  threads (a point writes its own Cracks::pair_field; a thread lists the
+ *  points of its share that key a pair), then the keys and the
+ *  subscribers on one thread, share after share: in point order, so that
+ *  the rows and slots come in the order they have on one thread. */
 static inline __attribute__((always_inline)) int
 key_fields(Sim *sim, const Cracks *C, StencilFn wide, int w)
 {
     const Grid *g = &sim->grid;
     const Particles *P = &sim->pts;
-#pragma omp parallel for num_threads(sim->threads) schedule(static)
-    for (int p = 0; p < P->n; p++) {
-        int node[STENCIL_MAX], cell = P->cell[p];
-        if (C->near_cell && C->near_cell[cell] < 0)
-            continue;                        /* no crack near: field 0 */
-        int n = stencil_node_list(sim, wide, p, node);
-        for (int a = 0; a < w; a++) {
-            CrackHit hit;
-            int f = a < n ? crack_field(C, cell, P->x[p], P->y[p],
-                                        grid_node_x(g, node[a]),
-                                        grid_node_y(g, node[a]), &hit) : 0;
-            C->pair_field[w * p + a] = (signed char)f;
-            if (f > 0 && C->pair_hit)
-                C->pair_hit[w * p + a] = hit;
-        }
-    }
-    for (int p = 0; p < P->n; p++) {
-        if (C->near_cell && C->near_cell[P->cell[p]] < 0)
-            continue;
-        for (int a = 0; a < w; a++) {
-            int f = C->pair_field[w * p + a];
-            if (!f)
-                continue;                    /* field 0: nothing to key */
-            if (f < 0) {
-                int node[STENCIL_MAX];
-                stencil_node_list(sim, wide, p, node);
-                return step_fail(sim, p, "crack crossings of one line (more "
-                                 "than CROSSINGS_MAX)", node[a]);
+    int np = P->n, shares = 1;
+#pragma omp parallel num_threads(sim->threads)
+    {
+        int t = omp_get_thread_num(), nt = omp_get_num_threads();
+        int k = (int)((long)np * t / nt), end = (int)((long)np * (t + 1) / nt);
+        for (int p = k; p < end; p++) {
+            int node[STENCIL_MAX], cell = P->cell[p], any = 0;
+            if (C->near_cell && C->near_cell[cell] < 0)
+                continue;                    /* no crack near: field 0 */
+            int n = stencil_node_list(sim, wide, p, node);
+            for (int a = 0; a < w; a++) {
+                CrackHit hit;
+                int f = a < n ? crack_field(C, cell, P->x[p], P->y[p],
+                                            grid_node_x(g, node[a]),
+                                            grid_node_y(g, node[a]), &hit) : 0;
+                C->pair_field[w * p + a] = (signed char)f;
+                if (f > 0 && C->pair_hit)
+                    C->pair_hit[w * p + a] = hit;
+                any |= f;
             }
-            unsigned key = (unsigned)f << C->side_shift;
-            if (wide ? fields_key_wide(sim, p, a, key) : fields_key(sim, p, a, key))
-                return -1;
-            if (C->ncrossed && cracks_tell_crossed(sim, C, p, a, &C->pair_hit[w * p + a]))
-                return -1;                   /* later stages' subscribers */
+            if (any)
+                C->keyed[k++] = p;
         }
+        C->keyed_end[t] = k;
+        if (t == 0)
+            shares = nt;
     }
+    for (int t = 0; t < shares; t++)
+        for (int k = (int)((long)np * t / shares); k < C->keyed_end[t]; k++) {
+            int p = C->keyed[k];
+            for (int a = 0; a < w; a++) {
+                int f = C->pair_field[w * p + a];
+                if (!f)
+                    continue;                /* field 0: nothing to key */
+                if (f < 0) {
+                    int node[STENCIL_MAX];
+                    stencil_node_list(sim, wide, p, node);
+                    return step_fail(sim, p, "crack crossings of one line (more "
+                                     "than CROSSINGS_MAX)", node[a]);
+                }
+                unsigned key = (unsigned)f << C->side_shift;
+                if (wide ? fields_key_wide(sim, p, a, key) : fields_key(sim, p, a, key))
+                    return -1;
+                if (C->ncrossed && cracks_tell_crossed(sim, C, p, a, &C->pair_hit[w * p + a]))
+                    return -1;               /* later stages' subscribers */
+            }
+        }
     return 0;
 }
 

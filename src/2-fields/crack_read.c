@@ -227,8 +227,10 @@ int cracks_prepare(Sim *sim, void *state, char *err, size_t errlen)
         }
     }
     C->reach = sc->run.shape && sc->run.shape->nodes > STENCIL_NODES;
-    if (!(C->pair_field = malloc((size_t)sim->fields.width *     /* Task 1 */
-                                 (size_t)(sim->pts.n + 1)))) {
+    size_t np = (size_t)sim->pts.n + 1;                          /* Task 1 */
+    if (!(C->pair_field = malloc((size_t)sim->fields.width * np)) ||
+        !(C->keyed = malloc(sizeof(int) * np)) ||
+        !(C->keyed_end = malloc(sizeof(int) * (size_t)sim->threads))) {
         snprintf(err, errlen, "%s: cracks: out of memory for Task 1", sc->file);
         return -1;
     }
@@ -252,5 +254,7 @@ void cracks_release(void *state)
     free(C->crack);
     free(C->pair_field);
     free(C->pair_hit);
+    free(C->keyed);
+    free(C->keyed_end);
     free(C);
 }

@@ -101,6 +101,11 @@ typedef struct Cracks {
     /** Likewise: the crossing that decided each keyed pair, kept for the
      *  subscribers (NULL while there are none). */
     CrackHit *pair_hit;
+    /** Per point: the points that key a pair, each thread's share of
+     *  the points listing its own from the share's first index on. */
+    int *keyed;
+    /** Per thread (Sim::threads): one past its last entry in @c keyed. */
+    int *keyed_end;
     const CrossingSearch *search; /**< the scene's crossing search */
     void *search_state;           /**< the search's own data */
     /** Per grid cell (numbered by its lower-left node): negative when no
