@@ -6,6 +6,7 @@
  *        (and relative volume when the pair asks), the shared adjustment.
  */
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,14 +33,16 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     M->cell_groups = calloc((size_t)nn, sizeof(unsigned));
     M->mixed = calloc((size_t)nn, 1);
     M->near = calloc((size_t)nn, 1);
-    M->keyed = calloc((size_t)(sim->pts.n > 0 ? sim->pts.n : 1), 1);
+    M->keyed = calloc((size_t)sim->pts.n + 1, 1);
+    M->keyed_list = calloc((size_t)sim->pts.n + 1, sizeof(int));
+    M->keyed_end = calloc((size_t)sim->threads, sizeof(int));
     M->node_work = calloc((size_t)nn, sizeof(double));
     M->area = calloc((size_t)nn, sizeof(double));
     M->cx = calloc((size_t)nn * CONTACT_AXES, sizeof(double));
     M->cy = calloc((size_t)nn * CONTACT_AXES, sizeof(double));
     M->geometry_step = -1;
     if (M->shift < 0 || fields_enable(sim) || !M->cell_groups || !M->mixed ||
-        !M->near || !M->keyed || !M->node_work || !M->area || !M->cx || !M->cy ||
+        !M->near || !M->keyed || !M->keyed_list || !M->keyed_end || !M->node_work || !M->area || !M->cx || !M->cy ||
         contact_decision_alloc(&M->decision, nn) ||
         (M->normal == NORMAL_REGRESSION &&
          (!(M->fit = calloc((size_t)nn * REGRESSION_DOUBLES, sizeof(double))) ||
@@ -125,26 +128,35 @@ int material_key_fields(Sim *sim, void *state, Seam seam)
                 seen |= M->cell_groups[n - nx] | (i > 0 ? M->cell_groups[n - nx - 1] : 0u);
             M->mixed[n] = (seen & (seen - 1)) != 0;  /* more than one group */
         }
-#pragma omp parallel for num_threads(sim->threads) schedule(static)
-    for (int p = 0; p < P->n; p++) {            /* which corners to key */
-        int node[STENCIL_NODES], c = P->cell[p];
-        unsigned bits = 0;
-        if (M->group_of_body[P->body[p]] != 0 &&
-            (M->mixed[c] | M->mixed[c + 1] | M->mixed[c + nx] | M->mixed[c + nx + 1])) {
+    int np = P->n, shares = 1;
+#pragma omp parallel num_threads(sim->threads)
+    {                                           /* which corners to key */
+        int t = omp_get_thread_num(), nt = omp_get_num_threads();
+        int k = (int)((long)np * t / nt), end = (int)((long)np * (t + 1) / nt);
+        for (int p = k; p < end; p++) {
+            int node[STENCIL_NODES], c = P->cell[p];
+            unsigned bits = 0;
+            if (M->group_of_body[P->body[p]] == 0 ||
+                !(M->mixed[c] | M->mixed[c + 1] | M->mixed[c + nx] | M->mixed[c + nx + 1]))
+                continue;                       /* field 0, or one group */
             stencil_nodes(sim, p, node);
             for (int a = 0; a < STENCIL_NODES; a++)
                 bits |= (unsigned)M->mixed[node[a]] << a;
+            M->keyed[p] = (unsigned char)bits;
+            M->keyed_list[k++] = p;
         }
-        M->keyed[p] = (unsigned char)bits;      /* 0: field 0, or one group */
+        M->keyed_end[t] = k;
+        if (t == 0)
+            shares = nt;
     }
-    for (int p = 0; p < P->n; p++) {            /* the rows, in point order */
-        if (!M->keyed[p])
-            continue;
-        unsigned key = (unsigned)M->group_of_body[P->body[p]] << M->shift;
-        for (int a = 0; a < STENCIL_NODES; a++)
-            if ((M->keyed[p] >> a & 1u) && fields_key(sim, p, a, key))
-                return -1;
-    }
+    for (int t = 0; t < shares; t++)            /* the rows, in point order */
+        for (int k = (int)((long)np * t / shares); k < M->keyed_end[t]; k++) {
+            int p = M->keyed_list[k];
+            unsigned key = (unsigned)M->group_of_body[P->body[p]] << M->shift;
+            for (int a = 0; a < STENCIL_NODES; a++)
+                if ((M->keyed[p] >> a & 1u) && fields_key(sim, p, a, key))
+                    return -1;
+        }
     return 0;
 }
 /// [material_key_fields]

@@ -59,6 +59,11 @@ typedef struct MaterialContact {
     unsigned char *keyed; /**< per point: bit a set when Task 1 keys its
                                corner a with its group (found on threads,
                                keyed on one in point order) */
+    int *keyed_list;      /**< per point: the points that key a corner,
+                               each thread's share of the points listing
+                               its own from the share's first index on */
+    int *keyed_end;       /**< per thread (Sim::threads): one past its
+                               last entry in keyed_list */
     double *node_work;    /**< per touched node (FieldTable::touched
                                order): the work of its pairs at Task 4,
                                added to @c work in node order */
