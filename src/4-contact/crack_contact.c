@@ -155,7 +155,8 @@ static int node_volumes(Sim *sim, ContactState *S)
     const Grid *g = &sim->grid;
     if (S->opening && reserve_slots(sim, S))
         return -1;
-    for (int k = 0; k < F->ntouched; k++) {
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
+    for (int k = 0; k < F->ntouched; k++) {  /* a node clears its own */
         S->vnode[F->touched[k]] = 0.0;
         for (int s = F->touched[k]; s >= 0 && S->opening; s = field_next(F, g, s))
             S->ux[s] = S->uy[s] = 0.0;

@@ -388,6 +388,7 @@ static void regression_fit(Sim *sim, MaterialContact *M)
 {
     const FieldTable *F = &sim->fields;
     for (int it = 0; it < REGRESSION_NEWTON; it++) {
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
         for (int k = 0; k < F->ntouched; k++)
             regression_clear(&M->fit[REGRESSION_DOUBLES * F->touched[k]]);
         if (sim->strips.n > 0)
@@ -395,9 +396,11 @@ static void regression_fit(Sim *sim, MaterialContact *M)
         else
             for (int p = 0, np = sim->pts.n; p < np; p++)
                 fit_point(sim, M, p, NULL);
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
         for (int k = 0; k < F->ntouched; k++)
             regression_newton(&M->fit[REGRESSION_DOUBLES * F->touched[k]]);
     }
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
     for (int k = 0; k < F->ntouched; k++) {
         int n = F->touched[k];
         double c[2];
@@ -483,6 +486,8 @@ static int interface_geometry(Sim *sim, MaterialContact *M)
     const Grid *g = &sim->grid;
     if (reserve_slots(sim, M))
         return -1;
+    /* on threads, the node loops too: a node writes its own slots */
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
     for (int k = 0; k < F->ntouched; k++)       /* the nodes with several fields */
         for (int s = F->touched[k]; s >= 0; s = field_next(F, g, s)) {
             M->gx[s] = M->gy[s] = M->va[s] = 0.0;
@@ -493,6 +498,7 @@ static int interface_geometry(Sim *sim, MaterialContact *M)
         }
     mark_cells_around(M->near, F, g->nnx, 1);   /* and the cells around them */
     mass_gradients(sim, M);
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
     for (int k = 0; k < F->ntouched; k++) {     /* eq. 8-10: the node's area */
         int n = F->touched[k];
         M->area[n] = 0.0;

@@ -53,6 +53,10 @@ static const Case cases[] = {
        start, material_contact_work sums 10 nodes */
     {"tests/4-contact/scenes/slide.cfg", "run.time=0.5 run.snapshots=1 "
      "bodies.[1].velocity=[5.0,0.0] contact.[0].law=friction contact.[0].mu=0.3"},
+    /* and with the regression normal (its per-node fits on threads) */
+    {"tests/4-contact/scenes/slide.cfg", "run.time=0.5 run.snapshots=1 "
+     "bodies.[1].velocity=[5.0,0.0] contact.[0].law=friction contact.[0].mu=0.3 "
+     "contact.[0].normal=\\\"regression\\\""},
     /* Task 1 through the index (stage 3's search, named) over a kinked crack */
     {"tests/3-crossing/scenes/dcb_kinked.cfg",
      "run.time=20 run.snapshots=1 run.crack_search=\\\"indexed\\\""},
