@@ -227,6 +227,13 @@ int cracks_prepare(Sim *sim, void *state, char *err, size_t errlen)
         }
     }
     C->reach = sc->run.shape && sc->run.shape->nodes > STENCIL_NODES;
+    size_t np = (size_t)sim->pts.n + 1;                          /* Task 1 */
+    if (!(C->pair_field = malloc((size_t)sim->fields.width * np)) ||
+        !(C->keyed = malloc(sizeof(int) * np)) ||
+        !(C->keyed_end = malloc(sizeof(int) * (size_t)sim->threads))) {
+        snprintf(err, errlen, "%s: cracks: out of memory for Task 1", sc->file);
+        return -1;
+    }
     if (C->search->update && C->search->update(C, &sim->grid)) {
         snprintf(err, errlen, "%s: cracks: out of memory for the crossing "
                  "search \"%s\"", sc->file, C->search->name);
@@ -245,5 +252,9 @@ void cracks_release(void *state)
         free(C->crack[k].y);
     }
     free(C->crack);
+    free(C->pair_field);
+    free(C->pair_hit);
+    free(C->keyed);
+    free(C->keyed_end);
     free(C);
 }

@@ -94,6 +94,18 @@ typedef struct Cracks {
         void *state;              /**< its own state */
     } crossed[CRACKS_CROSSED_MAX];
     int ncrossed;                 /**< how many */
+    /** Per point, FieldTable::width at a time: the field of each pair
+     *  (0, 1, 2; -1 for too many crossings), found on threads in Task 1
+     *  and keyed on one thread in point order (the order of the rows). */
+    signed char *pair_field;
+    /** Likewise: the crossing that decided each keyed pair, kept for the
+     *  subscribers (NULL while there are none). */
+    CrackHit *pair_hit;
+    /** Per point: the points that key a pair, each thread's share of
+     *  the points listing its own from the share's first index on. */
+    int *keyed;
+    /** Per thread (Sim::threads): one past its last entry in @c keyed. */
+    int *keyed_end;
     const CrossingSearch *search; /**< the scene's crossing search */
     void *search_state;           /**< the search's own data */
     /** Per grid cell (numbered by its lower-left node): negative when no
@@ -243,9 +255,11 @@ int cracks_snapshot(const Sim *sim, void *state, const char *dir, int index,
 /** @brief history.csv column: number of multi-field nodes. */
 int cracks_history(const Sim *sim, void *state, FILE *f, int header);
 
-/** @brief Add @p fn (with @p state) to the subscribers of Task 1's
- *         crossings. @return 0, or -1 when CRACKS_CROSSED_MAX are taken. */
-int cracks_on_crossed(Cracks *C, CrossedHook fn, void *state);
+/** @brief Set-up: add @p fn (with @p state) to the subscribers of Task
+ *         1's crossings (the first gives Cracks::pair_hit its room, for the
+ *         points and stencils of @p sim). @return 0, or -1 when
+ *         CRACKS_CROSSED_MAX are taken or memory is exhausted. */
+int cracks_on_crossed(const Sim *sim, Cracks *C, CrossedHook fn, void *state);
 
 /** @brief Save or restore the cracks' points (SEAM_CHECKPOINT). */
 int cracks_checkpoint(Sim *sim, void *state, FILE *f, int save);

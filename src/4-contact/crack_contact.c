@@ -22,14 +22,17 @@ int crack_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     Cracks *C = cracks_of(sim);
     const Scene *sc = &sim->scene;
     S->vnode = calloc((size_t)sim->grid.nnodes, sizeof(double));
+    S->node_work = calloc((size_t)sim->grid.nnodes, sizeof(double));
     S->volumes_step = -1;
-    if (cracks_on_crossed(C, sc->run.stencil ? crack_normals_crossed_wide
-                                             : crack_normals_crossed, &S->normals)) {
+    if (cracks_on_crossed(sim, C, sc->run.stencil ? crack_normals_crossed_wide
+                                                  : crack_normals_crossed,
+                          &S->normals)) {
         snprintf(err, errlen, "%s: crack contact: more than %d subscribers to "
-                 "the crack crossings", sc->file, CRACKS_CROSSED_MAX);
+                 "the crack crossings, or out of memory", sc->file,
+                 CRACKS_CROSSED_MAX);
         return -1;
     }
-    if (crack_normals_alloc(&S->normals, sim) || !S->vnode ||
+    if (crack_normals_alloc(&S->normals, sim) || !S->vnode || !S->node_work ||
         contact_decision_alloc(&S->decision, sim->grid.nnodes)) {
         snprintf(err, errlen, "%s: out of memory for crack contact", sc->file);
         return -1;
@@ -152,7 +155,8 @@ static int node_volumes(Sim *sim, ContactState *S)
     const Grid *g = &sim->grid;
     if (S->opening && reserve_slots(sim, S))
         return -1;
-    for (int k = 0; k < F->ntouched; k++) {
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
+    for (int k = 0; k < F->ntouched; k++) {  /* a node clears its own */
         S->vnode[F->touched[k]] = 0.0;
         for (int s = F->touched[k]; s >= 0 && S->opening; s = field_next(F, g, s))
             S->ux[s] = S->uy[s] = 0.0;
@@ -168,12 +172,22 @@ static int node_volumes(Sim *sim, ContactState *S)
 }
 /// [node_volumes]
 
+/** A node's visit at a task: what its pairs share (one per node, so that
+ *  nodes run on threads). */
+typedef struct NodeVisit {
+    Seam seam;            /**< the task being done */
+    int node;             /**< the node */
+    int pair;             /**< pairs of fields met at the node so far */
+    int adjusted;         /**< a pair was adjusted */
+    double work;          /**< its pairs' work at Task 4, in their order */
+} NodeVisit;
+
 /// [contact_pair]
 /** Contact between field @p a (above the crack) and field @p b (below) at
  *  a node of volume @p vnode, across crack @p tag whose normal is the
  *  direction of (nx, ny): detect (eq. 10-12), adjust (eq. 13-19). */
-static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
-                         double ny, int tag, double vnode, int *adjusted)
+static void contact_pair(Sim *sim, ContactState *S, NodeVisit *v, int a,
+                         int b, double nx, double ny, int tag, double vnode)
 {
     Grid *g = &sim->grid;
     const CrackContact *cc = tag >= 0 && tag < S->ncracks ? &S->crack[tag] : NULL;
@@ -185,35 +199,35 @@ static void contact_pair(Sim *sim, ContactState *S, int a, int b, double nx,
     if (cc->law.detect == DETECT_OPENING)
         opening = (S->ux[b] / g->m[b] - S->ux[a] / g->m[a]) * n[0] +
                   (S->uy[b] / g->m[b] - S->uy[a] / g->m[a]) * n[1];
-    unsigned bit = S->pair < 32 ? 1u << S->pair : 0u;
-    S->pair++;
-    if (S->seam == SEAM_TASK6_CONTACT) {     /* the step's decision */
-        if (!contact_decision_held(&S->decision, S->node, bit, sim->step))
+    unsigned bit = v->pair < 32 ? 1u << v->pair : 0u;
+    v->pair++;
+    if (v->seam == SEAM_TASK6_CONTACT) {     /* the step's decision */
+        if (!contact_decision_held(&S->decision, v->node, bit, sim->step))
             return;
-    } else if (S->seam == SEAM_TASK2_HELD &&
+    } else if (v->seam == SEAM_TASK2_HELD &&
                cc->law.kind != CONTACT_BONDED) {   /* the last step's */
-        if (!contact_decision_held(&S->decision, S->node, bit, sim->step - 1) ||
+        if (!contact_decision_held(&S->decision, v->node, bit, sim->step - 1) ||
             !contact_pair_detected(g, a, b, n, vnode / cc->vcell, opening, sim->dt,
                                    &cc->law))
             return;
     } else if (!contact_pair_detected(g, a, b, n, vnode / cc->vcell, opening,
                                        sim->dt, &cc->law)) {  /* at the step's end */
         return;
-    } else if (S->seam == SEAM_TASK4_CONTACT) {
-        contact_decision_hold(&S->decision, S->node, bit);
+    } else if (v->seam == SEAM_TASK4_CONTACT) {
+        contact_decision_hold(&S->decision, v->node, bit);
     }
     double dp[2];
     int slides = contact_adjust(g, a, b, n, &cc->law, dp);
-    if (S->seam == SEAM_TASK4_CONTACT && slides)       /* the change the points get */
-        S->work += contact_friction_work(g, a, b, n, dp, sim->dt);
-    *adjusted = 1;
+    if (v->seam == SEAM_TASK4_CONTACT && slides)       /* the change the points get */
+        v->work += contact_friction_work(g, a, b, n, dp, sim->dt);
+    v->adjusted = 1;
 }
 /// [contact_pair]
 
 /** Contact across the crack between the fields @p f (sides 0, 1, 2; -1
  *  when absent) of one body at a node of volume @p vnode. */
-static void crack_contact_fields(Sim *sim, ContactState *S, const int f[3],
-                                 double vnode, int *adjusted)
+static void crack_contact_fields(Sim *sim, ContactState *S, NodeVisit *v,
+                                 const int f[3], double vnode)
 {
     const int *tag = S->normals.tag;
     int nn = sim->grid.nnodes;
@@ -222,8 +236,7 @@ static void crack_contact_fields(Sim *sim, ContactState *S, const int f[3],
         add_slot_normal(sim, S, f[1], &nx, &ny);
         add_slot_normal(sim, S, f[2], &nx, &ny);
         int t1 = tag[f[1] - nn], t2 = tag[f[2] - nn];
-        contact_pair(sim, S, f[1], f[2], nx, ny, t1 < t2 ? t1 : t2, vnode,
-                     adjusted);
+        contact_pair(sim, S, v, f[1], f[2], nx, ny, t1 < t2 ? t1 : t2, vnode);
         return;
     }
     for (int side = 1; side <= 2; side++) {       /* field 0 against 1, 2 */
@@ -233,49 +246,62 @@ static void crack_contact_fields(Sim *sim, ContactState *S, const int f[3],
         add_slot_normal(sim, S, f[side], &nx, &ny);
         int t = tag[f[side] - nn];
         if (side == 1)                   /* above the crack: field 1 */
-            contact_pair(sim, S, f[1], f[0], nx, ny, t, vnode, adjusted);
+            contact_pair(sim, S, v, f[1], f[0], nx, ny, t, vnode);
         else                             /* the node's side is above */
-            contact_pair(sim, S, f[0], f[2], nx, ny, t, vnode, adjusted);
+            contact_pair(sim, S, v, f[0], f[2], nx, ny, t, vnode);
     }
 }
 
 /// [crack_contact_task]
+/** The @p k-th touched node at task @p seam: its bodies' fields across the
+ *  crack (the side at bit @p side_shift of the key); writes its own slots,
+ *  decision and S->node_work[k] only. @return 1 when a pair was adjusted. */
+static int crack_contact_node(Sim *sim, ContactState *S, Seam seam, int k,
+                              int side_shift)
+{
+    const FieldTable *F = &sim->fields;
+    const Grid *g = &sim->grid;
+    unsigned side_mask = 3u << side_shift;
+    NodeVisit v = {seam, F->touched[k], 0, 0, 0.0};
+    double vnode = S->vnode[v.node];         /* eq. 8: the node's total volume */
+    if (seam == SEAM_TASK4_CONTACT)
+        contact_decision_begin(&S->decision, v.node, sim->step);
+    /* a node's slots are sorted by key: those of one body (the key's
+       bits beyond the crack side) come together, sides 0, 1, 2 */
+    for (int s = v.node; s >= 0;) {
+        unsigned body = field_key(F, g, s) & ~side_mask;
+        int f[3] = {-1, -1, -1};
+        for (; s >= 0 && (field_key(F, g, s) & ~side_mask) == body;
+             s = field_next(F, g, s))
+            if (g->m[s] > 0)
+                f[(field_key(F, g, s) & side_mask) >> side_shift] = s;
+        crack_contact_fields(sim, S, &v, f, vnode);
+    }
+    S->node_work[k] = v.work;
+    return v.adjusted;
+}
+
 int crack_contact_task(Sim *sim, void *state, Seam seam)
 {
     ContactState *S = state;
     const FieldTable *F = &sim->fields;
-    const Grid *g = &sim->grid;
-    const Cracks *C = cracks_of(sim);
-    unsigned side_mask = 3u << C->side_shift;
+    int nodes = 0, side_shift = cracks_of(sim)->side_shift;
     if (S->volumes_step != sim->step) {      /* the step's first contact */
         if (crack_normals_sum(sim, &S->normals) || node_volumes(sim, S))
             return -1;
         S->volumes_step = sim->step;
     }
-    S->task_nodes = 0;
-    for (int k = 0; k < F->ntouched; k++) {
-        int n = F->touched[k], adjusted = 0;
-        double vnode = S->vnode[n];          /* eq. 8: the node's total volume */
-        S->seam = seam;
-        S->node = n;
-        S->pair = 0;
-        if (seam == SEAM_TASK4_CONTACT)
-            contact_decision_begin(&S->decision, n, sim->step);
-        /* a node's slots are sorted by key: those of one body (the key's
-           bits beyond the crack side) come together, sides 0, 1, 2 */
-        for (int s = n; s >= 0;) {
-            unsigned body = field_key(F, g, s) & ~side_mask;
-            int f[3] = {-1, -1, -1};
-            for (; s >= 0 && (field_key(F, g, s) & ~side_mask) == body;
-                 s = field_next(F, g, s))
-                if (g->m[s] > 0)
-                    f[(field_key(F, g, s) & side_mask) >> C->side_shift] = s;
-            crack_contact_fields(sim, S, f, vnode, &adjusted);
-        }
-        S->task_nodes += adjusted;
-    }
-    if (seam == SEAM_TASK4_CONTACT)          /* the step's decision */
+    /* on threads: a node writes its own slots, decision and work only */
+#pragma omp parallel for num_threads(sim->threads) schedule(static) \
+    reduction(+ : nodes)
+    for (int k = 0; k < F->ntouched; k++)
+        nodes += crack_contact_node(sim, S, seam, k, side_shift);
+    S->task_nodes = nodes;
+    if (seam == SEAM_TASK4_CONTACT) {        /* the step's decision */
+        for (int k = 0; k < F->ntouched; k++)    /* in node order, any threads */
+            S->work += S->node_work[k];
         S->nodes = S->task_nodes;
+    }
     return 0;
 }
 /// [crack_contact_task]

@@ -39,9 +39,9 @@ typedef struct ContactState {
     ContactDecision decision; /**< the pairs in contact at Task 4 */
     long volumes_step;    /**< the step whose normals and node volumes are
                                found (-1: none) */
-    Seam seam;            /**< the task being done */
-    int node;             /**< the node being visited */
-    int pair;             /**< pairs of fields met at that node so far */
+    double *node_work;    /**< per touched node (FieldTable::touched
+                               order): the work of its pairs at Task 4,
+                               added to @c work in node order */
     int nodes;            /**< nodes in contact at this step's decision (Task 4) */
     int task_nodes;       /**< nodes adjusted at the current task */
     double work;          /**< work done by contact since the start (mJ) */

@@ -69,6 +69,7 @@ void crack_contact_release(void *state)
     free(S->crack);
     crack_normals_free(&S->normals);
     free(S->vnode);
+    free(S->node_work);
     free(S->x0);
     free(S->y0);
     free(S->ux);

@@ -6,6 +6,7 @@
  *        (and relative volume when the pair asks), the shared adjustment.
  */
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,12 +33,16 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     M->cell_groups = calloc((size_t)nn, sizeof(unsigned));
     M->mixed = calloc((size_t)nn, 1);
     M->near = calloc((size_t)nn, 1);
+    M->keyed = calloc((size_t)sim->pts.n + 1, 1);
+    M->keyed_list = calloc((size_t)sim->pts.n + 1, sizeof(int));
+    M->keyed_end = calloc((size_t)sim->threads, sizeof(int));
+    M->node_work = calloc((size_t)nn, sizeof(double));
     M->area = calloc((size_t)nn, sizeof(double));
     M->cx = calloc((size_t)nn * CONTACT_AXES, sizeof(double));
     M->cy = calloc((size_t)nn * CONTACT_AXES, sizeof(double));
     M->geometry_step = -1;
     if (M->shift < 0 || fields_enable(sim) || !M->cell_groups || !M->mixed ||
-        !M->near || !M->area || !M->cx || !M->cy ||
+        !M->near || !M->keyed || !M->keyed_list || !M->keyed_end || !M->node_work || !M->area || !M->cx || !M->cy ||
         contact_decision_alloc(&M->decision, nn) ||
         (M->normal == NORMAL_REGRESSION &&
          (!(M->fit = calloc((size_t)nn * REGRESSION_DOUBLES, sizeof(double))) ||
@@ -85,6 +90,18 @@ static __attribute__((noinline)) int key_fields_wide(Sim *sim, MaterialContact *
 /// [material_key_fields_wide]
 
 /// [material_key_fields]
+/** Point @p p's group to its cell (by lower-left node), when @p own (NULL:
+ *  all) has that node: an OR, the same in any order (strip_scatter.h). */
+static inline __attribute__((always_inline)) void
+group_point(Sim *sim, void *state, int p, const Owned *own)
+{
+    MaterialContact *M = state;
+    const Particles *P = &sim->pts;
+    int c = P->cell[p];
+    if (owns(&sim->grid, own, c))
+        M->cell_groups[c] |= 1u << M->group_of_body[P->body[p]];
+}
+
 int material_key_fields(Sim *sim, void *state, Seam seam)
 {
     MaterialContact *M = state;
@@ -95,8 +112,12 @@ int material_key_fields(Sim *sim, void *state, Seam seam)
     if (sim->scene.run.stencil)                 /* another row of run.shape */
         return key_fields_wide(sim, M);
     memset(M->cell_groups, 0, sizeof(unsigned) * (size_t)g->nnodes);
-    for (int p = 0; p < P->n; p++)              /* the groups in each cell */
-        M->cell_groups[P->cell[p]] |= 1u << M->group_of_body[P->body[p]];
+    if (sim->strips.n > 0)                      /* the groups in each cell */
+        strip_scatter(sim, group_point, M);
+    else
+        for (int p = 0; p < P->n; p++)
+            group_point(sim, M, p, NULL);
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
     for (int j = 0; j < g->nny; j++)            /* a node: its four cells */
         for (int i = 0; i < nx; i++) {
             int n = j * nx + i;
@@ -107,18 +128,35 @@ int material_key_fields(Sim *sim, void *state, Seam seam)
                 seen |= M->cell_groups[n - nx] | (i > 0 ? M->cell_groups[n - nx - 1] : 0u);
             M->mixed[n] = (seen & (seen - 1)) != 0;  /* more than one group */
         }
-    for (int p = 0; p < P->n; p++) {
-        int node[STENCIL_NODES], group = M->group_of_body[P->body[p]];
-        int c = P->cell[p];
-        if (group == 0 || !(M->mixed[c] | M->mixed[c + 1] | M->mixed[c + nx] |
-                            M->mixed[c + nx + 1]))
-            continue;                           /* field 0, or one group */
-        stencil_nodes(sim, p, node);
-        for (int a = 0; a < STENCIL_NODES; a++)
-            if (M->mixed[node[a]] &&
-                fields_key(sim, p, a, (unsigned)group << M->shift))
-                return -1;
+    int np = P->n, shares = 1;
+#pragma omp parallel num_threads(sim->threads)
+    {                                           /* which corners to key */
+        int t = omp_get_thread_num(), nt = omp_get_num_threads();
+        int k = (int)((long)np * t / nt), end = (int)((long)np * (t + 1) / nt);
+        for (int p = k; p < end; p++) {
+            int node[STENCIL_NODES], c = P->cell[p];
+            unsigned bits = 0;
+            if (M->group_of_body[P->body[p]] == 0 ||
+                !(M->mixed[c] | M->mixed[c + 1] | M->mixed[c + nx] | M->mixed[c + nx + 1]))
+                continue;                       /* field 0, or one group */
+            stencil_nodes(sim, p, node);
+            for (int a = 0; a < STENCIL_NODES; a++)
+                bits |= (unsigned)M->mixed[node[a]] << a;
+            M->keyed[p] = (unsigned char)bits;
+            M->keyed_list[k++] = p;
+        }
+        M->keyed_end[t] = k;
+        if (t == 0)
+            shares = nt;
     }
+    for (int t = 0; t < shares; t++)            /* the rows, in point order */
+        for (int k = (int)((long)np * t / shares); k < M->keyed_end[t]; k++) {
+            int p = M->keyed_list[k];
+            unsigned key = (unsigned)M->group_of_body[P->body[p]] << M->shift;
+            for (int a = 0; a < STENCIL_NODES; a++)
+                if ((M->keyed[p] >> a & 1u) && fields_key(sim, p, a, key))
+                    return -1;
+        }
     return 0;
 }
 /// [material_key_fields]
@@ -350,6 +388,7 @@ static void regression_fit(Sim *sim, MaterialContact *M)
 {
     const FieldTable *F = &sim->fields;
     for (int it = 0; it < REGRESSION_NEWTON; it++) {
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
         for (int k = 0; k < F->ntouched; k++)
             regression_clear(&M->fit[REGRESSION_DOUBLES * F->touched[k]]);
         if (sim->strips.n > 0)
@@ -357,9 +396,11 @@ static void regression_fit(Sim *sim, MaterialContact *M)
         else
             for (int p = 0, np = sim->pts.n; p < np; p++)
                 fit_point(sim, M, p, NULL);
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
         for (int k = 0; k < F->ntouched; k++)
             regression_newton(&M->fit[REGRESSION_DOUBLES * F->touched[k]]);
     }
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
     for (int k = 0; k < F->ntouched; k++) {
         int n = F->touched[k];
         double c[2];
@@ -445,6 +486,8 @@ static int interface_geometry(Sim *sim, MaterialContact *M)
     const Grid *g = &sim->grid;
     if (reserve_slots(sim, M))
         return -1;
+    /* on threads, the node loops too: a node writes its own slots */
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
     for (int k = 0; k < F->ntouched; k++)       /* the nodes with several fields */
         for (int s = F->touched[k]; s >= 0; s = field_next(F, g, s)) {
             M->gx[s] = M->gy[s] = M->va[s] = 0.0;
@@ -455,6 +498,7 @@ static int interface_geometry(Sim *sim, MaterialContact *M)
         }
     mark_cells_around(M->near, F, g->nnx, 1);   /* and the cells around them */
     mass_gradients(sim, M);
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
     for (int k = 0; k < F->ntouched; k++) {     /* eq. 8-10: the node's area */
         int n = F->touched[k];
         M->area[n] = 0.0;
@@ -514,64 +558,81 @@ static int pair_axis(const MaterialContact *M, int node, int a, int b,
 /// [pair_axis]
 
 /// [material_contact_task]
+/** Tasks 2, 4 and 6 at the @p k-th touched node: its pairs of fields, in
+ *  their order; the work of its sliding pairs (Task 4) summed in that
+ *  order into MaterialContact::node_work[k]. Writes its own slots and
+ *  decision only. @return 1 when it adjusted a pair that is not bonded. */
+static int node_contact(Sim *sim, MaterialContact *M, Seam seam, int k)
+{
+    const FieldTable *F = &sim->fields;
+    Grid *g = &sim->grid;
+    unsigned gmask = M->group_mask;
+    int n = F->touched[k], adjusted = 0, pair = 0;
+    double vrel = M->area[n] / (g->dx * g->dy);  /* eq. 10, per unit thickness */
+    double work = 0.0;
+    if (seam == SEAM_TASK4_CONTACT)
+        contact_decision_begin(&M->decision, n, sim->step);
+    for (int a = n; a >= 0; a = field_next(F, g, a)) {
+        unsigned ka = field_key(F, g, a);
+        for (int b = field_next(F, g, a); b >= 0 && g->m[a] > 0;
+             b = field_next(F, g, b)) {
+            unsigned kb = field_key(F, g, b);
+            int ga = (int)((ka >> M->shift) & gmask);
+            int gb = (int)((kb >> M->shift) & gmask);
+            if (g->m[b] <= 0 || ga == gb || (ka & M->side_mask) != (kb & M->side_mask))
+                continue;                       /* same body, or across a crack */
+            unsigned bit = pair < 32 ? 1u << pair : 0u;
+            pair++;
+            const ContactLaw *law = material_law(M, ga, gb);
+            double nrm[2] = {0.0, 0.0}, gap = 0.0;
+            if (law->kind != CONTACT_BONDED && !pair_axis(M, n, a, b, law, nrm, &gap))
+                continue;
+            if (seam == SEAM_TASK6_CONTACT) {   /* the step's decision */
+                if (!contact_decision_held(&M->decision, n, bit, sim->step))
+                    continue;
+            } else if (seam == SEAM_TASK2_HELD &&
+                       law->kind != CONTACT_BONDED) {   /* the last step's */
+                if (!contact_decision_held(&M->decision, n, bit, sim->step - 1) ||
+                    !contact_pair_detected(g, a, b, nrm, vrel, gap, sim->dt, law))
+                    continue;
+            } else if (!contact_pair_detected(g, a, b, nrm, vrel, gap, sim->dt,
+                                              law)) {   /* at the step's end */
+                continue;
+            } else if (seam == SEAM_TASK4_CONTACT) {
+                contact_decision_hold(&M->decision, n, bit);
+            }
+            double dp[2];
+            int slides = contact_adjust(g, a, b, nrm, law, dp);
+            if (seam == SEAM_TASK4_CONTACT && slides)  /* the change the points get */
+                work += contact_friction_work(g, a, b, nrm, dp, sim->dt);
+            adjusted |= law->kind != CONTACT_BONDED;
+        }
+    }
+    M->node_work[k] = work;
+    return adjusted;
+}
+
 int material_contact_task(Sim *sim, void *state, Seam seam)
 {
     MaterialContact *M = state;
     const FieldTable *F = &sim->fields;
-    Grid *g = &sim->grid;
-    unsigned gmask = M->group_mask;
+    int nodes = 0;
     if (M->geometry_step != sim->step) {        /* the step's first contact */
         if (interface_geometry(sim, M))
             return -1;
         M->geometry_step = sim->step;
     }
-    M->task_nodes = 0;
-    double cell = g->dx * g->dy;
-    for (int k = 0; k < F->ntouched; k++) {
-        int n = F->touched[k], adjusted = 0, pair = 0;
-        double vrel = M->area[n] / cell;        /* eq. 10, per unit thickness */
-        if (seam == SEAM_TASK4_CONTACT)
-            contact_decision_begin(&M->decision, n, sim->step);
-        for (int a = n; a >= 0; a = field_next(F, g, a)) {
-            unsigned ka = field_key(F, g, a);
-            for (int b = field_next(F, g, a); b >= 0 && g->m[a] > 0;
-                 b = field_next(F, g, b)) {
-                unsigned kb = field_key(F, g, b);
-                int ga = (int)((ka >> M->shift) & gmask);
-                int gb = (int)((kb >> M->shift) & gmask);
-                if (g->m[b] <= 0 || ga == gb || (ka & M->side_mask) != (kb & M->side_mask))
-                    continue;                   /* same body, or across a crack */
-                unsigned bit = pair < 32 ? 1u << pair : 0u;
-                pair++;
-                const ContactLaw *law = material_law(M, ga, gb);
-                double nrm[2] = {0.0, 0.0}, gap = 0.0;
-                if (law->kind != CONTACT_BONDED && !pair_axis(M, n, a, b, law, nrm, &gap))
-                    continue;
-                if (seam == SEAM_TASK6_CONTACT) {   /* the step's decision */
-                    if (!contact_decision_held(&M->decision, n, bit, sim->step))
-                        continue;
-                } else if (seam == SEAM_TASK2_HELD &&
-                           law->kind != CONTACT_BONDED) {   /* the last step's */
-                    if (!contact_decision_held(&M->decision, n, bit, sim->step - 1) ||
-                        !contact_pair_detected(g, a, b, nrm, vrel, gap, sim->dt, law))
-                        continue;
-                } else if (!contact_pair_detected(g, a, b, nrm, vrel, gap, sim->dt,
-                                                  law)) {   /* at the step's end */
-                    continue;
-                } else if (seam == SEAM_TASK4_CONTACT) {
-                    contact_decision_hold(&M->decision, n, bit);
-                }
-                double dp[2];
-                int slides = contact_adjust(g, a, b, nrm, law, dp);
-                if (seam == SEAM_TASK4_CONTACT && slides)  /* the change the points get */
-                    M->work += contact_friction_work(g, a, b, nrm, dp, sim->dt);
-                adjusted |= law->kind != CONTACT_BONDED;
-            }
-        }
-        M->task_nodes += adjusted;
-    }
-    if (seam == SEAM_TASK4_CONTACT)          /* the step's decision */
+    /* on threads: a node writes its own slots, decision and work only */
+#pragma omp parallel for num_threads(sim->threads) schedule(static) \
+    reduction(+ : nodes)
+    for (int k = 0; k < F->ntouched; k++)
+        nodes += node_contact(sim, M, seam, k);
+    M->task_nodes = nodes;
+    if (seam == SEAM_TASK4_CONTACT) {           /* the step's decision */
+        for (int k = 0; k < F->ntouched; k++)   /* in node order, any threads */
+            M->work += M->node_work[k];
         M->nodes = M->task_nodes;
+    }
     return 0;
 }
 /// [material_contact_task]

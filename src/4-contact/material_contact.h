@@ -56,6 +56,17 @@ typedef struct MaterialContact {
                                set when a point of group g is in it */
     unsigned char *mixed; /**< per node: points of several groups reach it */
     unsigned char *near;  /**< per cell: a corner has several fields */
+    unsigned char *keyed; /**< per point: bit a set when Task 1 keys its
+                               corner a with its group (found on threads,
+                               keyed on one in point order) */
+    int *keyed_list;      /**< per point: the points that key a corner,
+                               each thread's share of the points listing
+                               its own from the share's first index on */
+    int *keyed_end;       /**< per thread (Sim::threads): one past its
+                               last entry in keyed_list */
+    double *node_work;    /**< per touched node (FieldTable::touched
+                               order): the work of its pairs at Task 4,
+                               added to @c work in node order */
     double *gx;           /**< per slot: mass gradient x (at nodes with
                                several fields) */
     double *gy;           /**< per slot: mass gradient y */

@@ -240,6 +240,10 @@ void material_contact_release(void *state)
     free(M->cell_groups);
     free(M->mixed);
     free(M->near);
+    free(M->keyed);
+    free(M->keyed_list);
+    free(M->keyed_end);
+    free(M->node_work);
     free(M->gx);
     free(M->gy);
     free(M->area);

@@ -15,7 +15,10 @@
  * on the thread count: each scene is run on 1 to 4 threads with
  * run.precision = "full" and its output compared byte for byte, a run that
  * goes unstable (USL on the disks, beyond their time; CPDI's domain grown
- * wider than a cell) included. A scene the build refuses (a crack before
+ * wider than a cell) included. Contact's node loops (between bodies and
+ * across a crack, friction's work summed node by node in node order) and
+ * Task 1's crossings (found on threads, keyed in point order) are among
+ * them. A scene the build refuses (a crack before
  * stage 2, run.shape "gimp" before stage 8) is skipped, and every stage
  * runs this test (later_stages).
  */
@@ -43,6 +46,20 @@ static const Case cases[] = {
     {"tests/4-contact/scenes/disks_contact.cfg", "run.time=1.5 run.snapshots=1"},
     /* crack contact, the opening rule: the faces touch by 8 */
     {"tests/4-contact/scenes/inclined_crack.cfg", "run.time=8 run.snapshots=1"},
+    /* and with friction: 20 nodes slide, contact_work sums them */
+    {"tests/4-contact/scenes/inclined_crack.cfg", "run.time=8 run.snapshots=1 "
+     "cracks.[0].contact.law=friction cracks.[0].contact.mu=0.3"},
+    /* contact between bodies with friction: the block slides from the
+       start, material_contact_work sums 10 nodes */
+    {"tests/4-contact/scenes/slide.cfg", "run.time=0.5 run.snapshots=1 "
+     "bodies.[1].velocity=[5.0,0.0] contact.[0].law=friction contact.[0].mu=0.3"},
+    /* and with the regression normal (its per-node fits on threads) */
+    {"tests/4-contact/scenes/slide.cfg", "run.time=0.5 run.snapshots=1 "
+     "bodies.[1].velocity=[5.0,0.0] contact.[0].law=friction contact.[0].mu=0.3 "
+     "contact.[0].normal=\\\"regression\\\""},
+    /* Task 1 through the index (stage 3's search, named) over a kinked crack */
+    {"tests/3-crossing/scenes/dcb_kinked.cfg",
+     "run.time=20 run.snapshots=1 run.crack_search=\\\"indexed\\\""},
     {"tests/1-mpm/scenes/disks.cfg", "run.shape=gimp run.time=1"},  /* 3 x 3 */
     {"tests/8-shapes/scenes/cpdi_stretch.cfg", ""},              /* unstable */
     {"tests/1-mpm/scenes/spinning_disk.cfg",                      /* APIC */
