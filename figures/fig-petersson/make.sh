@@ -21,9 +21,11 @@
 # Writes build/figures/fig-petersson.png and build/figures/fig-petersson.txt;
 # runs under build/fig-petersson/.  About ten minutes, the h = 10 run the
 # most of it.  Environment: MPM (default build/stage6/mpm), SPACINGS
-# (default "20 13.333333333333334 10").
+# (default "20 13.333333333333334 10"), GROW_SPACINGS (the grown crack's
+# three, default SPACINGS).
 . "$(dirname "$0")/../lib.sh"
 SPACINGS=${SPACINGS:-"20 13.333333333333334 10"}
+GROW_SPACINGS=${GROW_SPACINGS:-$SPACINGS}
 RUNS=build/fig-petersson
 SCENE=tests/6-xefg/scenes/petersson.cfg
 GROW=tests/6-xefg/scenes/petersson_grow.cfg
@@ -72,24 +74,8 @@ run_case() {
         { e = $c["cohesive_dissipated"] + $c["cohesive_stored"] } END { print e }' \
         "$RUNS/$name/history.csv" >"$RUNS/$name.coh"
     awk -v name="$name" -v h="$h" -v steps="$steps" -v loop="$loop" \
-        -v coh="$(cat "$RUNS/$name.coh")" -v v=0.005 -v ramp=20 '
-    function at(x,  i) { for (i = 2; i <= n; i++) if (d[i - 1] <= x && x <= d[i])
-        return p[i - 1] + (p[i] - p[i - 1]) * (x - d[i - 1]) / (d[i] - d[i - 1]); return -1 }
-    { n++; d[n] = $1; p[n] = $2; t = $5
-      if ($2 > pk) { pk = $2; pd = $1 } if ($5 >= 2 * ramp && $3 > ke) ke = $3 }
-    END {
-        # the area: each load times its interval, from half way to the
-        # sample before to half way to the one after (the end: delta_e)
-        de = v * (t - ramp / 2); area = 0
-        for (i = 1; i <= n; i++) { lo = i > 1 ? (d[i - 1] + d[i]) / 2 : 0
-            hi = i < n ? (d[i] + d[i + 1]) / 2 : de; area += p[i] * (hi - lo) }
-        s = 0; m = 0; for (i = n; i >= 1 && d[i] > de - 0.05; i--) { s += p[i]; m++ }
-        pe = s / m; tot = area + pe * de; ref = 0.137 * 50 * 100
-        p1 = at(0.365); p2 = at(0.607)
-        printf "%-10s %6.2f %7d %7.1f %8.1f %+7.2f %8.1f %+7.2f %7.1f %6.3f %7.1f %6.1f %7.1f %+7.2f %7.1f %+7.2f %7.4f\n",
-            name, h, steps, loop, p1, 100 * (p1 / 774 - 1), p2, 100 * (p2 / 598 - 1), pk, pd,
-            area, pe, tot, 100 * (tot / ref - 1), coh, 100 * (coh / ref - 1), ke
-    }' "$RUNS/$name.dat" >"$RUNS/$name.row"
+        -v coh="$(cat "$RUNS/$name.coh")" -v v=0.005 -v ramp=20 \
+        -f figures/fig-petersson/row.awk "$RUNS/$name.dat" >"$RUNS/$name.row"
     cat "$RUNS/$name.row"
 }
 
@@ -102,7 +88,7 @@ done
 run_case rho-half 20 "materials.[0].rho=1.2e-3"
 run_case linear 20 'cracks.[0].cohesive.law="linear"'
 grows=()
-for h in $SPACINGS; do
+for h in $GROW_SPACINGS; do
     name=grow-h$(printf '%.4g' "$h")
     run_case "$name" "$h"
     grows+=("$name")
