@@ -71,8 +71,9 @@ static int cohesive_report(const Sim *sim, void *state, FILE *f)
     const Cohesive *c = state;
     const Xefg *x = xefg_of(sim);
     EnergyTerms e = cohesive_energy_terms(sim);
-    if (fprintf(f, "mpm: cohesive: %d points; stored = kinetic %.9g + strain "
-                "%.9g + cohesive %.9g\n", c->npt, xefg_kinetic_energy(x),
+    if (fprintf(f, "mpm: cohesive: %d points; stored (%s) = kinetic %.9g + "
+                "strain %.9g + cohesive %.9g\n", c->npt,
+                sim->scene.run.units->energy, xefg_kinetic_energy(x),
                 xefg_strain_energy(x, sim), cohesive_stored_energy(c)) < 0)
         return -1;
     return energy_terms_print(sim, &e, x->e0, 0, f);    /* held work counted */
