@@ -28,7 +28,7 @@
 #   notch's two and its growth, or with x < 50 (the struck edge is x = 0);
 # - the energy balance: in = the work of the held places (XEFG's account,
 #   xefg_held_work) against kinetic + strain + cohesive stored +
-#   dissipated; the error at the end (the log's "mpm: cohesive:" line) and
+#   dissipated; the error at the end (the log's "mpm: energy" line) and
 #   the largest |error| over the run, both in % of in at the end.
 # The spread of the first kinks over the spacings whose crack grew.
 #
@@ -94,7 +94,7 @@ while IFS=: read -r name h scene over; do
     awk 'NR == FNR { w = $3; next } { print $0, (w != 0 ? 100 * $2 / w : 0) }' \
         "$RUNS/energy_$name.txt" "$RUNS/energy_$name.txt" >"$RUNS/energy_$name.tmp" &&
         mv "$RUNS/energy_$name.tmp" "$RUNS/energy_$name.txt"
-    err_end=$(sed -nE 's/^mpm: cohesive: .*error [^ ]+ \(([^ ]+) % of in\).*/\1/p' "$RUNS/$name.log")
+    err_end=$(sed -nE 's/^mpm: energy .*error [^ ]+ \(([^ ]+) % of in\).*/\1/p' "$RUNS/$name.log")
     err_max=$(awk '{ e = $2 < 0 ? -$2 : $2; if (e > m) m = e; w = $3 } END { printf "%.4f", 100 * m / w }' \
         "$RUNS/energy_$name.txt")
     away=$(awk -F, '/^[0-9]/ { n++; if ($1 != 0 || (n > 2 && $3 < 50)) a++ } END { print a + 0 }' "$last")

@@ -123,14 +123,20 @@ EnergyTerms energy_balance_terms(const Sim *sim, const EnergyBalance *B)
     e.in = B->e0 + B->w_ext;
     e.stored = t.kinetic + t.strain;
     e.damping = B->w_damp;
-    e.dissipated = 0;                          /* every stage's, by the seam */
+    e.dissipated = energy_seam_dissipated(sim);
+    e.error = e.in - e.stored - e.damping - e.dissipated;
+    return e;
+}
+
+double energy_seam_dissipated(const Sim *sim)
+{
+    double d = 0;                              /* every stage's, by the seam */
     const SeamList *l = &sim->hooks.seam[SEAM_ENERGY];
     for (int k = 0; k < l->n; k++) {
         const char *name;
-        e.dissipated += l->at[k].fn.energy(sim, l->at[k].state, &name);
+        d += l->at[k].fn.energy(sim, l->at[k].state, &name);
     }
-    e.error = e.in - e.stored - e.damping - e.dissipated;
-    return e;
+    return d;
 }
 
 /** Moving boundaries and moving held points: their reactions do work
@@ -152,27 +158,32 @@ int energy_balance_report(const Sim *sim, void *state, FILE *f)
 {
     const EnergyBalance *B = state;
     EnergyTerms e = energy_balance_terms(sim, B);
-    double scale = e.in != 0.0 ? e.in : 1.0;
+    return energy_terms_print(sim, &e, B->e0, moving_holds(&sim->scene), f);
+}
+
+int energy_terms_print(const Sim *sim, const EnergyTerms *e, double e0,
+                       int moving, FILE *f)
+{
+    double scale = e->in != 0.0 ? e->in : 1.0;
     const Units *u = sim->scene.run.units;
     int bad = fprintf(f, "mpm: energy (%s) at t = %.6g %s: in %.9g (start %.9g, "
                       "external work %.9g) = stored %.9g + damping %.9g", u->energy,
-                      sim->t, u->time, e.in, B->e0, e.in - B->e0, e.stored,
-                      e.damping) < 0;
+                      sim->t, u->time, e->in, e0, e->in - e0, e->stored,
+                      e->damping) < 0;
     const SeamList *l = &sim->hooks.seam[SEAM_ENERGY];  /* each stage's term */
     for (int k = 0; k < l->n; k++) {
         const char *name;
         double w = l->at[k].fn.energy(sim, l->at[k].state, &name);
         bad |= fprintf(f, " + %s %.9g", name, w) < 0;
     }
-    int moving = moving_holds(&sim->scene);
     if (moving)             /* no balance: say so, not a percentage */
         bad |= fprintf(f, " + not counted %.9g: the work of %d moving "
                        "boundar%s or held point set%s, which this account "
-                       "does not measure (no balance)\n", e.error, moving,
+                       "does not measure (no balance)\n", e->error, moving,
                        moving == 1 ? "y" : "ies", moving == 1 ? "" : "s") < 0;
     else
-        bad |= fprintf(f, " + error %.9g (%+.4f %% of in)\n", e.error,
-                       100.0 * e.error / scale) < 0;
+        bad |= fprintf(f, " + error %.9g (%+.4f %% of in)\n", e->error,
+                       100.0 * e->error / scale) < 0;
     return bad ? -1 : 0;
 }
 /// [energy_balance_report]

@@ -55,6 +55,17 @@ int energy_balance_damping(Sim *sim, void *state, Seam seam);
 /** @brief Print the balance line at the end of a run. */
 int energy_balance_report(const Sim *sim, void *state, FILE *f);
 
+/** @brief What the stages report through SEAM_ENERGY, summed (>= 0). */
+double energy_seam_dissipated(const Sim *sim);
+
+/** @brief Print the balance line of terms @p e, @p e0 the energy at the
+ *         start (the rest of EnergyTerms::in is external work), each
+ *         SEAM_ENERGY term by name; with @p moving > 0 moving holds whose
+ *         work the terms lack, and no balance. A method with its own
+ *         account (XEFG) prints its terms with it. @return 0 or -1. */
+int energy_terms_print(const Sim *sim, const EnergyTerms *e, double e0,
+                       int moving, FILE *f);
+
 /** @brief Save or restore the account's sums (SEAM_CHECKPOINT). */
 int energy_balance_checkpoint(Sim *sim, void *state, FILE *f, int save);
 

@@ -13,6 +13,7 @@
 
 #include "cell_list.h"
 #include "cohesive_law.h"
+#include "energy_balance.h"
 #include "xefg.h"
 
 /** One crack's `cohesive` group. */
@@ -118,6 +119,13 @@ double cohesive_stored_energy(const Cohesive *c);
 
 /** @brief Energy the law has dissipated (mJ). */
 double cohesive_dissipated_energy(const Cohesive *c);
+
+/** @brief The energy account of an XEFG run with a cohesive crack, in
+ *         stage 5's terms: in = the start (kinetic + strain) + the work of
+ *         the held places; stored = kinetic + strain + what the law holds;
+ *         damping = XEFG's damped work (Xefg::w_damped); dissipated = every
+ *         stage's SEAM_ENERGY term (the law's dissipation). */
+EnergyTerms cohesive_energy_terms(const Sim *sim);
 
 /** @brief The history columns, report, checkpoint and energy term of a
  *         scene with a cohesive crack. @return 0, or -1 when a seam is

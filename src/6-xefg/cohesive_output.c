@@ -28,40 +28,55 @@ static void crack_means(const Cohesive *c, double *t, double *open)
 /// [cohesive_history]
 /** history.csv: cohesive_stored and cohesive_dissipated (energy),
  *  cohesive_traction (the mean normal traction), cohesive_opening (the
- *  largest normal opening) and xefg_held_work (the work the held places
- *  did on the body: the kinetic energy their projections added). */
+ *  largest normal opening), xefg_held_work (the work the held places
+ *  did on the body: the impulses of their projections times the held
+ *  velocities), xefg_damped_work (what the damping took out) and
+ *  energy_error (the balance's, cohesive_energy_terms()). */
 static int cohesive_history(const Sim *sim, void *state, FILE *f, int header)
 {
     const Cohesive *c = state;
     if (header)
         return fprintf(f, ",cohesive_stored,cohesive_dissipated,"
-                       "cohesive_traction,cohesive_opening,xefg_held_work") < 0
-                   ? -1 : 0;
+                       "cohesive_traction,cohesive_opening,xefg_held_work,"
+                       "xefg_damped_work,energy_error") < 0 ? -1 : 0;
     double t, open;
     crack_means(c, &t, &open);
-    return fprintf(f, ",%.9g,%.9g,%.9g,%.9g,%.9g", cohesive_stored_energy(c),
-                   cohesive_dissipated_energy(c), t, open,
-                   xefg_of(sim)->w_held) < 0 ? -1 : 0;
+    const Xefg *x = xefg_of(sim);
+    return fprintf(f, ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g",
+                   cohesive_stored_energy(c), cohesive_dissipated_energy(c), t,
+                   open, x->w_held, x->w_damped,
+                   cohesive_energy_terms(sim).error) < 0 ? -1 : 0;
 }
 /// [cohesive_history]
 
-/** The end of a run: the points and the energy balance of the XEFG run
- *  (stage 5's account follows the MPM step only). */
+/// [cohesive_energy_terms]
+EnergyTerms cohesive_energy_terms(const Sim *sim)
+{
+    const Xefg *x = xefg_of(sim);
+    EnergyTerms e;
+    e.in = x->e0 + x->w_held;
+    e.stored = xefg_kinetic_energy(x) + xefg_strain_energy(x, sim) +
+               cohesive_stored_energy(x->coh);
+    e.damping = x->w_damped;
+    e.dissipated = energy_seam_dissipated(sim);    /* the law's, by the seam */
+    e.error = e.in - e.stored - e.damping - e.dissipated;
+    return e;
+}
+/// [cohesive_energy_terms]
+
+/** The end of a run: the points, what is stored, and the balance in stage
+ *  5's line (whose own account follows the MPM step's seams only). */
 static int cohesive_report(const Sim *sim, void *state, FILE *f)
 {
     const Cohesive *c = state;
     const Xefg *x = xefg_of(sim);
-    const char *eu = sim->scene.run.units->energy;
-    double k = xefg_kinetic_energy(x), u = xefg_strain_energy(x, sim);
-    double s = cohesive_stored_energy(c), d = cohesive_dissipated_energy(c);
-    double w = x->w_damped;
-    double in = x->e0 + x->w_held, err = in - k - u - s - d - w;
-    return fprintf(f, "mpm: cohesive: %d points; energy (%s) at t = %g: in %.9g "
-                   "(start %.9g + held work %.9g) = kinetic %.9g + strain %.9g + "
-                   "cohesive stored %.9g + dissipated %.9g + damped %.9g + error "
-                   "%.9g (%+.4f %% of in)\n", c->npt, eu, sim->t, in, x->e0,
-                   x->w_held, k, u, s, d, w, err,
-                   in != 0.0 ? 100.0 * err / in : 0.0) < 0 ? -1 : 0;
+    EnergyTerms e = cohesive_energy_terms(sim);
+    if (fprintf(f, "mpm: cohesive: %d points; stored (%s) = kinetic %.9g + "
+                "strain %.9g + cohesive %.9g\n", c->npt,
+                sim->scene.run.units->energy, xefg_kinetic_energy(x),
+                xefg_strain_energy(x, sim), cohesive_stored_energy(c)) < 0)
+        return -1;
+    return energy_terms_print(sim, &e, x->e0, 0, f);    /* held work counted */
 }
 
 /** The checkpoint: the history variables, the held and damped work. */

@@ -54,7 +54,8 @@
  * averaged stress ahead of a mode-I tip has sigma_xx near sigma_yy) and
  * three of the four failed; with "hoop" all four are met, so none is open.
  * The issue's fifth, the peak within 5 % over three spacings, takes the
- * h = 13.3 and 10 mm runs: make fig-petersson.
+ * h = 13.3, 10 and 6.67 mm runs (about 23 minutes of CPU): make
+ * fig-petersson (chapter 6c: 1.91 %).
  *
  * petersson_stall, with PETERSSON_GROW_DIAG=1 (="tip": the tip criterion,
  * else criterion = "average"; PETERSSON_GROW_POINTS=1 adds every cohesive
