@@ -73,6 +73,10 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
         snprintf(err, errlen, "%s: out of memory for the threads' strips", name);
         return -1;
     }
+    if (stencils_init(sim)) {         /* one stencil per point (stencils.h) */
+        snprintf(err, errlen, "%s: out of memory for the points' stencils", name);
+        return -1;
+    }
     sim_set_time_step(sim);
     return sim_check_time_step(sim, err, errlen);
 }

@@ -42,7 +42,7 @@ static void add_point_loads(Sim *sim)
     }
 }
 
-static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what);
+static void extrapolate_wide(Sim *sim, unsigned what);
 static void extrapolate_strips(Sim *sim, unsigned what);
 
 /// [extrapolate]
@@ -61,21 +61,26 @@ static inline void momentum_pair(Grid *g, int s, double S, double qx,
  *  only (eq. 31), and force (eq. 28), as @p what asks. Inlined at every
  *  call, so that a constant NULL @p own costs nothing. */
 static inline __attribute__((always_inline)) void
-scatter_point(const Particles *P, Grid *g, int p, const Stencil *st, int n,
+scatter_point(const Particles *P, Grid *g, int p, const StencilRow *st, int n,
               unsigned what, const Owned *own)
 {
-    /* one loop for each case, so that the test is not made per node */
+    /* one loop for each case, so that the test is not made per node;
+       S, Gx, Gy read once (a store to the grid could alias them), and
+       the loops unrolled by the four corners */
     if (what & EXTRAP_MASS) {
         double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
+#pragma GCC unroll 4
         for (int a = 0; a < n; a++) {
             int s = st->slot[a];
+            double S = st->S[a];
             if (!owns(g, own, s))
                 continue;
-            g->m[s] += mp * st->S[a];                   /* eq. 26 */
-            momentum_pair(g, s, st->S[a], qx, qy);
+            g->m[s] += mp * S;                          /* eq. 26 */
+            momentum_pair(g, s, S, qx, qy);
         }
     } else if (what & EXTRAP_MOMENTUM) {                /* eq. 31 */
         double mp = P->m[p], qx = mp * P->vx[p], qy = mp * P->vy[p];
+#pragma GCC unroll 4
         for (int a = 0; a < n; a++) {
             int s = st->slot[a];
             if (!owns(g, own, s))
@@ -86,12 +91,14 @@ scatter_point(const Particles *P, Grid *g, int p, const Stencil *st, int n,
     if (what & EXTRAP_FORCE) {
         double v = P->vol[p];                           /* m_p / rho_p */
         double sxx = P->sxx[p], syy = P->syy[p], sxy = P->sxy[p];
+#pragma GCC unroll 4
         for (int a = 0; a < n; a++) {                   /* eq. 28 */
             int s = st->slot[a];
+            double Gx = st->Gx[a], Gy = st->Gy[a];
             if (!owns(g, own, s))
                 continue;
-            g->fx[s] -= v * (sxx * st->Gx[a] + sxy * st->Gy[a]);
-            g->fy[s] -= v * (sxy * st->Gx[a] + syy * st->Gy[a]);
+            g->fx[s] -= v * (sxx * Gx + sxy * Gy);
+            g->fy[s] -= v * (sxy * Gx + syy * Gy);
         }
     }
 }
@@ -103,11 +110,10 @@ void extrapolate(Sim *sim, unsigned what)
     if (sim->strips.n > 0)              /* several threads (strips.h) */
         extrapolate_strips(sim, what);
     else if (sim->scene.run.stencil)    /* another row of run.shape */
-        extrapolate_wide(sim, sim->scene.run.stencil, what);
+        extrapolate_wide(sim, what);
     else
         for (int p = 0; p < P->n; p++) {  /* the paper's four nodes */
-            Stencil st;
-            stencil_linear(sim, p, &st);
+            StencilRow st = stencil_stored(sim, p);
             scatter_point(P, g, p, &st, STENCIL_NODES, what, NULL);
         }
     if (what & EXTRAP_FORCE)            /* after every point, as on one */
@@ -117,11 +123,12 @@ void extrapolate(Sim *sim, unsigned what)
 
 /// [extrapolate_strips]
 /** Strip @p t's scatters: its points in increasing index, through the
- *  bilinear stencil (@p wide NULL, a constant after inlining) or @p wide
- *  and run.transfer's term after each point's, as extrapolate_wide();
- *  a point that reaches no other strip (most) needs no test of its pairs. */
+ *  stored bilinear stencil (@p wide 0, a constant after inlining) or the
+ *  stored stencil of run.shape's function (@p wide 1) and run.transfer's
+ *  term after each point's, as extrapolate_wide(); a point that reaches
+ *  no other strip (most) needs no test of its pairs. */
 static inline __attribute__((always_inline)) void
-scatter_strip(Sim *sim, int t, unsigned what, StencilFn wide)
+scatter_strip(Sim *sim, int t, unsigned what, int wide)
 {
     const Particles *P = &sim->pts;
     const Strips *S = &sim->strips;
@@ -130,20 +137,21 @@ scatter_strip(Sim *sim, int t, unsigned what, StencilFn wide)
                              ? sim->scene.run.transfer : NULL;
     Owned own = {S->first_node[t], S->first_node[t + 1]};
     for (int k = S->start[t]; k < S->start[t + 1]; k++) {
-        Stencil st;
         int p = S->list[k], n = STENCIL_NODES;
+        StencilRow st;
         if (wide) {
-            stencil_wide(sim, wide, p, &st);
+            st = stencil_row(stencil_stored_wide(sim, p));
             n = st.n;
         } else
-            stencil_linear(sim, p, &st);
+            st = stencil_stored(sim, p);
         int edge = S->row_strips[S->code[p]] & 1;   /* at the strip's edge */
         if (edge)
             scatter_point(P, g, p, &st, n, what, &own);
         else
             scatter_point(P, g, p, &st, n, what, NULL);
         if (tr)                         /* run.transfer (chapter 8) */
-            tr->scatter(sim, p, &st, g, edge ? &own : NULL);
+            tr->scatter(sim, p, stencil_stored_wide(sim, p), g,
+                        edge ? &own : NULL);
     }
 }
 
@@ -153,28 +161,29 @@ scatter_strip(Sim *sim, int t, unsigned what, StencilFn wide)
  *  same order. */
 static void extrapolate_strips(Sim *sim, unsigned what)
 {
-    StencilFn wide = sim->scene.run.stencil;
+    int wide = sim->scene.run.stencil != NULL;
 #pragma omp parallel for num_threads(sim->threads) schedule(static, 1)
     for (int t = 0; t < sim->strips.n; t++) {
         if (wide)                       /* another row of run.shape */
-            scatter_strip(sim, t, what, wide);
+            scatter_strip(sim, t, what, 1);
         else                            /* the paper's four nodes */
-            scatter_strip(sim, t, what, NULL);
+            scatter_strip(sim, t, what, 0);
     }
 }
 /// [extrapolate_strips]
 
-/** The scatters through a stencil of run.shape's table (chapter 8). */
-static void extrapolate_wide(Sim *sim, StencilFn wide, unsigned what)
+/** The scatters through the stored stencils of run.shape's stencil
+ *  function (chapter 8). */
+static void extrapolate_wide(Sim *sim, unsigned what)
 {
     const Particles *P = &sim->pts;
     Grid *g = &sim->grid;
     const Transfer *tr = sim->scene.run.transfer;
     for (int p = 0; p < P->n; p++) {
-        Stencil st;
-        stencil_wide(sim, wide, p, &st);
+        const Stencil *w = stencil_stored_wide(sim, p);
+        StencilRow st = stencil_row(w);
         scatter_point(P, g, p, &st, st.n, what, NULL);
         if (tr && (what & (EXTRAP_MASS | EXTRAP_MOMENTUM)))
-            tr->scatter(sim, p, &st, g, NULL); /* run.transfer (chapter 8) */
+            tr->scatter(sim, p, w, g, NULL);    /* run.transfer (chapter 8) */
     }
 }

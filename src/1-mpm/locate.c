@@ -1,6 +1,7 @@
 /**
  * @file locate.c
- * @brief Task 0: find every point's cell before the step begins.
+ * @brief Task 0: find every point's cell and stencil before the step
+ *        begins.
  */
 #include "shape.h"
 #include "step.h"
@@ -14,6 +15,7 @@ void locate_points(Sim *sim)
 #pragma omp parallel for num_threads(sim->threads)
     for (int p = 0; p < P->n; p++)
         P->cell[p] = shape_locate(g, P->x[p], P->y[p], &P->xi[p], &P->eta[p]);
+    stencils_fill(sim); /* every point's stencil, once for the step */
     strips_bin(sim);    /* the points of each thread's nodes (strips.h) */
 }
 /// [locate_points]

@@ -56,6 +56,7 @@ void sim_free(Sim *sim)
     sim->next = 0;
     fields_free(&sim->fields);
     strips_free(&sim->strips);
+    stencils_free(&sim->stencils);
     particles_free(&sim->pts);
     grid_free(&sim->grid);
     scene_free(&sim->scene);

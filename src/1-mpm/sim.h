@@ -14,6 +14,7 @@
 #include "hooks.h"
 #include "particles.h"
 #include "scene.h"
+#include "stencils.h"
 #include "strips.h"
 
 /** Most pieces of stage state a simulation carries. */
@@ -46,6 +47,8 @@ typedef struct Sim {
     FieldTable fields;  /**< velocity fields of the nodes (Task 1) */
     Strips strips;      /**< the nodes each thread writes, the points of
                              each (Task 0, strips.h) */
+    Stencils stencils;  /**< every point's stencil of this step (Task 0,
+                             stencils.h) */
     SimExt ext[SIM_MAX_EXT]; /**< the stages' state, by name */
     int next;           /**< how many */
     double t;           /**< current time (ms) */

@@ -85,21 +85,68 @@ static inline int stencil_of_point(const Sim *sim, int p, Stencil *st)
     return st->n = STENCIL_NODES;
 }
 
+/// [stencil_row]
+/** A point's stencil as the passes of a step read it: the arrays of a
+ *  Stencil, here pointers, into the stencils stored at Task 0
+ *  (stencils.h) or into a Stencil (stencil_row()). */
+typedef struct StencilRow {
+    int n;                /**< nodes in use */
+    const int *slot;      /**< the field slot of each pair */
+    const double *S;      /**< shape function values S_ip */
+    const double *Gx;     /**< gradients dS/dx */
+    const double *Gy;     /**< gradients dS/dy */
+} StencilRow;
+
+/** @brief The row of a computed stencil @p st. */
+static inline StencilRow stencil_row(const Stencil *st)
+{
+    return (StencilRow){st->n, st->slot, st->S, st->Gx, st->Gy};
+}
+
+/** @brief Point @p p's bilinear stencil of this step, stored at Task 0
+ *         with Task 1's fields (run.shape linear, no stencil function). */
+static inline StencilRow stencil_stored(const Sim *sim, int p)
+{
+    const Stencil4 *r = &sim->stencils.linear[p];
+    return (StencilRow){STENCIL_NODES, r->slot, r->S, r->Gx, r->Gy};
+}
+
+/** @brief Point @p p's stencil of this step through run.shape's stencil
+ *         function, stored at Task 0 with Task 1's fields. */
+static inline const Stencil *stencil_stored_wide(const Sim *sim, int p)
+{
+    return &sim->stencils.wide[p];
+}
+/// [stencil_row]
+
 /// [stencil_velocity_gradient]
 /** @brief The velocity gradient at a point, L_p = sum_i v_i (x) G_ip over
  *         the first @p n pairs of its stencil @p st (eq. 34), into @p L as
  *         (du/dx, du/dy, dv/dx, dv/dy). */
 static inline __attribute__((always_inline)) void
-stencil_velocity_gradient(const Grid *g, const Stencil *st, int n, double L[4])
+row_velocity_gradient(const Grid *g, const StencilRow *st, int n, double L[4])
 {
-    L[0] = L[1] = L[2] = L[3] = 0.0;
+    double xx = 0.0, xy = 0.0, yx = 0.0, yy = 0.0;  /* sums in registers */
+#pragma GCC unroll 4
     for (int a = 0; a < n; a++) {
         int s = st->slot[a];
-        L[0] += g->vx[s] * st->Gx[a];
-        L[1] += g->vx[s] * st->Gy[a];
-        L[2] += g->vy[s] * st->Gx[a];
-        L[3] += g->vy[s] * st->Gy[a];
+        xx += g->vx[s] * st->Gx[a];
+        xy += g->vx[s] * st->Gy[a];
+        yx += g->vy[s] * st->Gx[a];
+        yy += g->vy[s] * st->Gy[a];
     }
+    L[0] = xx;
+    L[1] = xy;
+    L[2] = yx;
+    L[3] = yy;
+}
+
+/** @brief row_velocity_gradient() of a computed stencil @p st. */
+static inline void stencil_velocity_gradient(const Grid *g, const Stencil *st,
+                                             int n, double L[4])
+{
+    StencilRow row = stencil_row(st);
+    row_velocity_gradient(g, &row, n, L);
 }
 /// [stencil_velocity_gradient]
 

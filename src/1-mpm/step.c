@@ -13,9 +13,10 @@ int assign_fields(Sim *sim)
     if (sim->hooks.seam[SEAM_TASK1_FIELDS].n == 0)
         return 0;
     fields_begin_step(sim);
-    if (hooks_run_step(sim, SEAM_TASK1_FIELDS))
+    if (hooks_run_step(sim, SEAM_TASK1_FIELDS) || fields_resolve(sim))
         return -1;
-    return fields_resolve(sim);
+    stencils_fields(sim);               /* the stored stencils' slots */
+    return 0;
 }
 /// [assign_fields]
 

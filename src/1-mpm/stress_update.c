@@ -22,7 +22,7 @@ static void rotate_by(double c, double s, double t[3])
 /** Turn point @p p's stress and strain by the spin of the nodal velocities
  *  over the @p n nodes of its stencil, w = 1/2 (v,x - u,y) dt, by the
  *  rotation (I - W/2)^-1 (I + W/2) (angle 2 atan(w/2)). */
-static inline void rotate_point(Sim *sim, int p, const Stencil *st, int n,
+static inline void rotate_point(Sim *sim, int p, const StencilRow *st, int n,
                                 double dt_star)
 {
     Particles *P = &sim->pts;
@@ -50,35 +50,32 @@ static inline void rotate_point(Sim *sim, int p, const Stencil *st, int n,
  *  costs nothing more. */
 static void rotate_with_spin(Sim *sim, double dt_star)
 {
-    StencilFn wide = sim->scene.run.stencil;
-    if (!wide)                          /* the paper's four nodes */
+    if (!sim->scene.run.stencil)        /* the paper's four nodes */
         for (int p = 0; p < sim->pts.n; p++) {
-            Stencil st;
-            stencil_linear(sim, p, &st);
+            StencilRow st = stencil_stored(sim, p);
             rotate_point(sim, p, &st, STENCIL_NODES, dt_star);
         }
     else                                /* another row of run.shape */
         for (int p = 0; p < sim->pts.n; p++) {
-            Stencil st;
-            stencil_wide(sim, wide, p, &st);
+            StencilRow st = stencil_row(stencil_stored_wide(sim, p));
             rotate_point(sim, p, &st, st.n, dt_star);
         }
 }
 /// [rotate_with_spin]
 
-static int update_stress_wide(Sim *sim, StencilFn wide, double dt_star);
+static int update_stress_wide(Sim *sim, double dt_star);
 
 /// [update_stress]
 /** Point @p p's strain increment from the nodal velocities over the @p n
  *  nodes of its stencil (eq. 34-35) and its material's stress update
  *  (eq. 36): 0, or -1 with a non-finite stress recorded. */
-static inline int strain_point(Sim *sim, int p, const Stencil *st, int n,
+static inline int strain_point(Sim *sim, int p, const StencilRow *st, int n,
                                double dt_star)
 {
     Particles *P = &sim->pts;
     const Grid *g = &sim->grid;
     double L[4];                        /* du/dx, du/dy, dv/dx, dv/dy */
-    stencil_velocity_gradient(g, st, n, L);
+    row_velocity_gradient(g, st, n, L);
     double dexx = dt_star * L[0], deyy = dt_star * L[3];
     double dexy = 0.5 * dt_star * (L[1] + L[2]);        /* eq. 35 */
     P->exx[p] += dexx;
@@ -102,12 +99,11 @@ int update_stress(Sim *sim, double dt_star)
     if (sim->scene.run.objective)
         rotate_with_spin(sim, dt_star);
     if (sim->scene.run.stencil)         /* another row of run.shape */
-        return update_stress_wide(sim, sim->scene.run.stencil, dt_star);
+        return update_stress_wide(sim, dt_star);
     /* a point writes only its own arrays: any number of threads */
 #pragma omp parallel for num_threads(sim->threads) reduction(min : rc)
     for (int p = 0; p < sim->pts.n; p++) {  /* the paper's four nodes */
-        Stencil st;
-        stencil_linear(sim, p, &st);
+        StencilRow st = stencil_stored(sim, p);
         if (strain_point(sim, p, &st, STENCIL_NODES, dt_star))
             rc = -1;
     }
@@ -115,14 +111,13 @@ int update_stress(Sim *sim, double dt_star)
 }
 /// [update_stress]
 
-/** The strain and stress through a stencil of run.shape's table
- *  (chapter 8). */
-static int update_stress_wide(Sim *sim, StencilFn wide, double dt_star)
+/** The strain and stress through the stored stencils of run.shape's
+ *  stencil function (chapter 8). */
+static int update_stress_wide(Sim *sim, double dt_star)
 {
     int rc = 0;
     for (int p = 0; p < sim->pts.n; p++) {
-        Stencil st;
-        stencil_wide(sim, wide, p, &st);
+        StencilRow st = stencil_row(stencil_stored_wide(sim, p));
         if (strain_point(sim, p, &st, st.n, dt_star))
             rc = -1;
     }

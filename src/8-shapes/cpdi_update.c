@@ -57,10 +57,9 @@ static int cpdi_update(Sim *sim, void *state, Seam seam)
     int rc = 0;
     (void)seam;
     for (int p = 0; p < sim->pts.n; p++) {
-        Stencil st;
-        stencil_wide(sim, cpdi_stencil, p, &st); /* the step's fields */
+        StencilRow st = stencil_row(stencil_stored_wide(sim, p)); /* Task 0's */
         double L[4];                             /* xx, xy, yx, yy */
-        stencil_velocity_gradient(g, &st, st.n, L);
+        row_velocity_gradient(g, &st, st.n, L);
         double *F = &C->F[4 * p], dt = sim->dt, f[4];
         f[0] = F[0] + dt * (L[0] * F[0] + L[1] * F[2]);
         f[1] = F[1] + dt * (L[0] * F[1] + L[1] * F[3]);
