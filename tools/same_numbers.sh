@@ -52,9 +52,10 @@ new=0
 for s in $STAGES; do
     [ -x "$A/stage$s/mpm" ] && [ -x "$B/stage$s/mpm" ] || continue
     for scene in $SCENES; do
-        # dt from a zero-length run, then exactly STEPS steps
-        dt=$("$B/stage$s/mpm" "$scene" -q -o "$WORK/probe" run.time=1e-12 2>/dev/null |
-             sed -nE 's/.*dt = ([0-9.eE+-]+) ms.*/\1/p')
+        # dt from a run too short for one step (the refusal names the step;
+        # a scene short enough to run prints it as "dt ="), then STEPS steps
+        dt=$("$B/stage$s/mpm" "$scene" -q -o "$WORK/probe" run.time=1e-12 2>&1 |
+             sed -nE 's/.*(dt = |over time steps of )([0-9.eE+-]+) .*/\2/p' | head -1)
         if [ -z "$dt" ]; then
             continue          # a scene this stage refuses (a crack in stage 1)
         fi
