@@ -11,9 +11,11 @@
 #include "scene.h"
 
 /** Bytes a point may take, at most: its arrays twice over (they grow by
- *  doubling), a row of the field table (4 keys, slots, normals and tags)
- *  and the stages' per-point state. An upper bound, not a measurement. */
-#define FOOTPRINT_POINT_BYTES (2.0 * (14 * 8 + 3 * 4) + 160.0)
+ *  doubling), a row of the field table (4 keys, slots, normals and tags),
+ *  the stages' per-point state and its stencil stored at Task 0 (256, the
+ *  widest: chapter 8's; a linear one takes 112). An upper bound, not a
+ *  measurement. */
+#define FOOTPRINT_POINT_BYTES (2.0 * (14 * 8 + 3 * 4) + 160.0 + 256.0)
 
 /** Bytes a node may take, at most: two slots of the grid's twelve
  *  arrays (field 0 and one extra field), the fixed flags, set-up scratch,
