@@ -6,8 +6,8 @@
 # steps, deterministic), and each against linear.
 #
 # tools/bench.sh calls it; `bash tools/bench_shapes.sh` runs it alone
-# (six callgrind runs: 13 minutes of wall time on two shared cores at a
-# load of 14 to 19).
+# (six callgrind runs: about 2 minutes of wall time on two shared cores,
+# 2026-11-28, beside other runs).
 # Environment: MPM (default build/stage8/mpm), SCENE (default
 # tools/bench/disks_50k.cfg), SHAPES (default "linear gimp cpdi").
 set -uf
