@@ -30,8 +30,9 @@
 #     with the solver's message and left off.
 #
 # Writes build/figures/fig-shapes.png and fig-shapes.txt; runs under
-# build/fig-shapes/.  11 minutes of wall time on two cores shared at a
-# load of 19 (panels c and d: their loops 2.9, 8.3, 18.9 and 4.5 s).
+# build/fig-shapes/.  1.5 minutes of wall time on two cores at a load of
+# about 1 (2026-11-28, after issue 29's stored stencils; 11 minutes at a
+# load of 19 before them).
 #
 # Environment: MPM (default build/stage8/mpm), BAR_CELLS (default
 # "8 16 32 64 128 256 512"), DISK_RUNS ("shape:transfer:update ..."),
