@@ -213,7 +213,7 @@ static int write_grid_binary(Sim *sim, const char *dir, const char *name)
     } else if (rc == 0) {
         rc = outfile_commit(&o);
     }
-    grid_clear(g);
+    grid_clear(g, sim->threads);
     return rc;
 }
 
@@ -243,7 +243,7 @@ int output_grid_csv(Sim *sim, const char *dir, const char *name)
         return write_grid_binary(sim, dir, name);
     OutFile o;
     if (outfile_open(&o, dir, "%s", name)) {
-        grid_clear(g);
+        grid_clear(g, sim->threads);
         return -1;
     }
     FILE *f = o.f;
@@ -258,7 +258,7 @@ int output_grid_csv(Sim *sim, const char *dir, const char *name)
                 d, grid_node_y(g, n), d, g->m[n], d, g->fx[n] * im,
                 d, g->fy[n] * im, d, g->px[n] * im);
     }
-    grid_clear(g);
+    grid_clear(g, sim->threads);
     return outfile_commit(&o);
 }
 

@@ -73,9 +73,14 @@ int grid_want(Grid *g, double **which);
 /** @brief Release the grid's arrays. */
 void grid_free(Grid *g);
 
+/** @brief Zero slots 0 .. nslots-1 of the @p narrays arrays @p arrays,
+ *         in blocks shared among @p threads threads (on one thread the
+ *         grid's `memset` was the largest serial part of a step, issue 29). */
+void grid_zero(const Grid *g, double *const *arrays, int narrays, int threads);
+
 /** @brief Task 0/8: zero masses, momenta, forces (and volumes) of every
  *         slot in use. */
-void grid_clear(Grid *g);
+void grid_clear(Grid *g, int threads);
 
 /** @brief Node that owns slot @p s. */
 static inline int grid_slot_node(const Grid *g, int s)

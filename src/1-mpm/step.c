@@ -3,8 +3,6 @@
  * @brief One MPM time step: the paper's Tasks 0-8 in order, with the
  *        stages' subscribers at the seams the paper names.
  */
-#include <string.h>
-
 #include "step.h"
 
 /// [assign_fields]
@@ -26,7 +24,7 @@ int sim_step(Sim *sim)
     const UpdateScheme *us = sim->scene.run.scheme;
     double dt = sim->dt;
 
-    grid_clear(&sim->grid);                       /* Task 8 of the last step */
+    grid_clear(&sim->grid, sim->threads);         /* Task 8 of the last step */
     locate_points(sim);                           /* Task 0 */
     if (assign_fields(sim))                       /* Task 1: v(p,i) */
         return -1;
@@ -55,8 +53,8 @@ int sim_step(Sim *sim)
 
     if (us->after > 0) {                          /* Task 6 */
         if (us->reextrapolate) {                  /* 6c: MUSL (and USAVG) */
-            memset(sim->grid.px, 0, (size_t)sim->grid.nslots * sizeof(double));
-            memset(sim->grid.py, 0, (size_t)sim->grid.nslots * sizeof(double));
+            double *const p[] = { sim->grid.px, sim->grid.py };
+            grid_zero(&sim->grid, p, 2, sim->threads);
             extrapolate(sim, EXTRAP_MOMENTUM);    /* eq. 31: old S, new v */
             grid_velocities(sim);
             if (grid_contact(sim, SEAM_TASK6_CONTACT))

@@ -116,6 +116,7 @@ int update_stress(Sim *sim, double dt_star)
 static int update_stress_wide(Sim *sim, double dt_star)
 {
     int rc = 0;
+#pragma omp parallel for num_threads(sim->threads) reduction(min : rc)
     for (int p = 0; p < sim->pts.n; p++) {
         StencilRow st = stencil_row(stencil_stored_wide(sim, p));
         if (strain_point(sim, p, &st, st.n, dt_star))

@@ -70,6 +70,8 @@ static int update_points_wide(Sim *sim)
     double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
     int rc = 0, np = sim->pts.n;
     const Transfer *tr = sim->scene.run.transfer;
+    /* a point writes only its own arrays (the gather too) */
+#pragma omp parallel for num_threads(sim->threads) reduction(min : rc)
     for (int p = 0; p < np; p++) {
         const Stencil *w = stencil_stored_wide(sim, p);
         StencilRow st = stencil_row(w);

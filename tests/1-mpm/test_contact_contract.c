@@ -62,7 +62,7 @@ static Sim *load(int *calls)
 /** Tasks 0-5 of one USL step, by hand (the grid is kept for checks). */
 static void tasks_0_to_5(Sim *sim)
 {
-    grid_clear(&sim->grid);
+    grid_clear(&sim->grid, 1);
     locate_points(sim);
     assert_int_equal(assign_fields(sim), 0);
     extrapolate(sim, EXTRAP_MASS | EXTRAP_FORCE);

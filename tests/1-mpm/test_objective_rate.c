@@ -85,7 +85,7 @@ static double spin_error(Sim *sim, int n, double dt, const double s0[3],
     for (int p = 0; p < P->n; p++)
         u0 += material_energy_density(P->sxx[p], P->syy[p], P->sxy[p],
                                       P->exx[p], P->eyy[p], P->exy[p]);
-    grid_clear(g);
+    grid_clear(g, 1);
     locate_points(sim);
     for (int s = 0; s < g->nslots; s++) {
         int node = grid_slot_node(g, s);

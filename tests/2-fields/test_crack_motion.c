@@ -52,7 +52,7 @@ static void crack_moves_with_centre_of_mass(void **state)
         P->vx[p] = 0;
         P->vy[p] = P->y[p] > 5.0 ? 1.0 : 0.0;
     }
-    grid_clear(&sim->grid);
+    grid_clear(&sim->grid, 1);
     locate_points(sim);
     assert_int_equal(assign_fields(sim), 0);
     extrapolate(sim, EXTRAP_MASS);

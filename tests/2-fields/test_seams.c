@@ -137,7 +137,7 @@ static void node_with_crack_side_and_two_materials(void **state)
         P->vx[p] = 0.3 + 0.1 * P->y[p] - 0.02 * P->x[p] * P->x[p];
         P->vy[p] = -0.2 + 0.05 * P->x[p] * P->y[p];
     }
-    grid_clear(&sim->grid);
+    grid_clear(&sim->grid, 1);
     locate_points(sim);
     assert_int_equal(assign_fields(sim), 0);
     extrapolate(sim, EXTRAP_MASS);

@@ -43,7 +43,7 @@ static Sim *halves(ContactLawKind law, double mu, double u, double v)
         P->vx[p] = above ? u : -u;
         P->vy[p] = above ? -v : v;
     }
-    grid_clear(&sim->grid);
+    grid_clear(&sim->grid, 1);
     locate_points(sim);
     assert_int_equal(assign_fields(sim), 0);
     extrapolate(sim, EXTRAP_MASS | EXTRAP_FORCE);

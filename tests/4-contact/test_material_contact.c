@@ -90,7 +90,7 @@ static Sim *blocks(double theta, const char *law, double un, double ut,
         P->vx[p] = in_a ? vx : -vx;
         P->vy[p] = in_a ? vy : -vy;
     }
-    grid_clear(&sim->grid);
+    grid_clear(&sim->grid, 1);
     locate_points(sim);
     assert_int_equal(assign_fields(sim), 0);
     extrapolate(sim, EXTRAP_MASS | EXTRAP_FORCE);
@@ -251,7 +251,7 @@ static void unlisted_pair_is_bonded(void **state)
         P->vx[p] = P->mat[p] == 0 ? 1.0 : P->mat[p] == 1 ? -1.0 : 0.25;
         P->vy[p] = P->mat[p] == 2 ? -0.5 : 0.3;
     }
-    grid_clear(&sim->grid);
+    grid_clear(&sim->grid, 1);
     locate_points(sim);
     assert_int_equal(assign_fields(sim), 0);
     extrapolate(sim, EXTRAP_MASS | EXTRAP_FORCE);

@@ -70,7 +70,7 @@ static void scatter_affine(Sim *sim, const double A[4], const double b[2])
         if (sim->scene.run.transfer)
             apic_set_gradient(sim, p, A);
     }
-    grid_clear(&sim->grid);
+    grid_clear(&sim->grid, 1);
     extrapolate(sim, EXTRAP_MASS);
     grid_velocities(sim);
 }
@@ -131,7 +131,7 @@ static void affine_fields_are_carried_exactly(void **state)
                 for (int j = 0; j < 4; j++)
                     bd = fmax(bd, fabs(B[j] - ad[j]) / (vmax * g->dx));
             }
-            grid_clear(g);                               /* and back */
+            grid_clear(g, 1);                            /* and back */
             extrapolate(sim, EXTRAP_MASS);
             grid_velocities(sim);
             back = fmax(back, node_error(sim, A, b, &vmax) / vmax);
