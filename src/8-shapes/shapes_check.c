@@ -15,34 +15,28 @@
 #include "material_contact.h"
 #include "step.h"
 
-/** Whether point @p p's domain crosses a side of the grid; the point's
- *  coordinate across that side in *@p at. */
-static int domain_crosses(const Sim *sim, int p, double *at)
-{
-    const Particles *P = &sim->pts;
-    const Grid *g = &sim->grid;
-    double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
-    double l = gimp_half(sim, p), hx = l * g->dx, hy = l * g->dy;
-    *at = P->x[p];
-    if (!(P->x[p] - hx >= g->ox && P->x[p] + hx <= xmax))
-        return 1;
-    *at = P->y[p];
-    return !(P->y[p] - hy >= g->oy && P->y[p] + hy <= ymax);
-}
-
 /** The first point whose domain is not inside the grid, or -1; its
  *  coordinate along the side it crosses in *@p at. */
 static int domain_outside(const Sim *sim, double *at)
 {
-    int n = sim->pts.n, first = n;
+    const Particles *P = &sim->pts;
+    const Grid *g = &sim->grid;
+    double xmax = g->ox + g->ncx * g->dx, ymax = g->oy + g->ncy * g->dy;
+    int n = P->n, first = n;
     /* the lowest index, whatever the number of threads */
 #pragma omp parallel for num_threads(sim->threads) reduction(min : first)
     for (int p = 0; p < n; p++) {
-        double here;
-        if (p < first && domain_crosses(sim, p, &here))
+        double l = gimp_half(sim, p), hx = l * g->dx, hy = l * g->dy;
+        if (!(P->x[p] - hx >= g->ox && P->x[p] + hx <= xmax &&
+              P->y[p] - hy >= g->oy && P->y[p] + hy <= ymax) && p < first)
             first = p;
     }
-    return first < n && domain_crosses(sim, first, at) ? first : -1;
+    if (first == n)
+        return -1;
+    double hx = gimp_half(sim, first) * g->dx;
+    *at = P->x[first] - hx >= g->ox && P->x[first] + hx <= xmax ? P->y[first]
+                                                                : P->x[first];
+    return first;
 }
 
 int gimp_domains_inside(Sim *sim, void *state, Seam seam)
