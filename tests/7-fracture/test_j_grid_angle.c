@@ -30,7 +30,9 @@
  * only with J_UNIFORM_OPEN=1 (24 of 48 bounds fail; chapter 7b, "A kinked
  * crack"). Red with J's x1 taken along the grid's x instead of the crack
  * (j_integral.c: q_,1 = dq[0]; 18 of 24 fail, all at 30 to 60 degrees).
- * 0.7 s.
+ * The points' sum of A_p q_,j (zero as an integral) is printed: it is
+ * h (one cell) along y at every angle and domain, its sign set by where the
+ * tip lies in its cell. 0.7 s.
  */
 #include <complex.h>
 #include <stdarg.h>
@@ -55,6 +57,8 @@ typedef struct Out {
     double JK[3];     /**< J / ((K_I^2 + K_II^2) / E') - 1 */
     double KI[3];     /**< K_I / the field's - 1 */
     double KII[3];    /**< K_II / the field's - 1 */
+    double sq[3][2];  /**< sum_p A_p q_,j over the points, in cells (0 as
+                           the integral of q_,j is) */
 } Out;
 
 /** The crack at @p deg degrees, its last tip at (@p ox, @p oy) cells off a
@@ -152,6 +156,13 @@ static Out exact_field(double deg, double ox, double oy, double kI, double kII,
         o.JK[c] = Tp->J[c] / JK - 1.0;
         o.KI[c] = Tp->KI[c] / (kI * AMP) - 1.0;
         o.KII[c] = Tp->KII[c] / (kII * AMP) - 1.0;
+        o.sq[c][0] = o.sq[c][1] = 0.0;
+        for (int p = 0; p < P->n; p++) {
+            double dq[2], A = P->vol[p] / sim->scene.bodies[0].thickness;
+            j_weight(&sim->grid, Tp, o.cells[c], P->x[p], P->y[p], dq);
+            o.sq[c][0] += A * dq[0] / H;
+            o.sq[c][1] += A * dq[1] / H;
+        }
     }
     tk_free(sim);
     return o;
@@ -189,6 +200,10 @@ static void exact_field_at_angles(void **state)
                              100 * r.JK[c], 100 * r.KI[c], 100 * r.KII[c]);
                 }
                 printf("\n");
+                if (!t)
+                    printf("      sum of A_p q_,j (cells): (%+.3f, %+.3f) (%+.3f, %+.3f) "
+                           "(%+.3f, %+.3f)\n", r.sq[0][0], r.sq[0][1], r.sq[1][0],
+                           r.sq[1][1], r.sq[2][0], r.sq[2][1]);
             }
     printf("  largest error: %.2f %% (T = 0), %.2f %% (T = K)\n", 100 * worst[0],
            100 * worst[1]);
