@@ -43,7 +43,10 @@
  * to the grid, with no kink, has a gap of the same size
  * (scene_k_inclined: +1.76 to +2.14 % on a / 16; on a / 32 +2.18 to
  * +2.49 % at one tip, +0.47 to +0.67 % at the other): it comes with the
- * kinked segment's angle to the grid, not with the face terms. Red with the face term of J
+ * kinked segment's angle to the grid, not with the face terms. On an exact
+ * near-tip field J is within 0.42 % of J(K) at any angle to the grid, but a
+ * uniform stress added to it puts J off by up to 9.7 %, at 0 degrees too
+ * (test_j_grid_angle.c: the square ring's weights; chapter 7b). Red with the face term of J
  * turned in sign (the spread goes over 1 %).
  * The straight tip (the first point) is printed, not bounded: the kink
  * makes the crack longer, so it is not Griffith's sigma sqrt(pi a).
