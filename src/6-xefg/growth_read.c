@@ -37,6 +37,10 @@ static Growth *growth_make(Sim *sim, int index)
             free(g);
             return NULL;
         }
+        /* subscribed here, before the parameters' section is
+         * (xefg_prepare()): at restore the events are replayed first */
+        if (hooks_on_checkpoint(&sim->hooks, growth_checkpoint, g))
+            return NULL;
     }
     if (index >= g->ncrack) {
         XefgGrowthSettings *s = realloc(g->set, sizeof *s * (size_t)(index + 1));
