@@ -32,6 +32,8 @@ typedef struct XefgGrowthSettings {
                             own tip (growth_tip_zone(); 0: "average") */
     double max_speed;  /**< a tip grows again only length / max_speed
                             after its last event (0: no limit) */
+    double radius;     /**< radius of the half disk criterion = "average"
+                            averages over (0: Growth::radius, 1.5 h) */
     int line;          /**< line of the group, for messages */
 } XefgGrowthSettings;
 
@@ -124,7 +126,8 @@ void growth_free(Growth *g);
  * @brief The stress averaged over the Gauss points within @p radius of
  *        the tip at end @p end of crack @p c and ahead of it (the half
  *        disk its direction points into), weighted by their weights, into
- *        @p s (xx, yy, xy); criterion = "average" passes Growth::radius.
+ *        @p s (xx, yy, xy); criterion = "average" passes the crack's
+ *        `radius`, or Growth::radius (1.5 h) without one.
  *        @return the number of points averaged.
  */
 int growth_tip_stress(const Xefg *x, int c, int end, double radius,
