@@ -14,6 +14,7 @@
 #define MPM_GROWTH_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "cell_list.h"
 #include "cohesive_law.h"
@@ -31,6 +32,8 @@ typedef struct XefgGrowthSettings {
                             own tip (growth_tip_zone(); 0: "average") */
     double max_speed;  /**< a tip grows again only length / max_speed
                             after its last event (0: no limit) */
+    double radius;     /**< radius of the half disk criterion = "average"
+                            averages over (0: Growth::radius, 1.5 h) */
     int line;          /**< line of the group, for messages */
 } XefgGrowthSettings;
 
@@ -123,7 +126,8 @@ void growth_free(Growth *g);
  * @brief The stress averaged over the Gauss points within @p radius of
  *        the tip at end @p end of crack @p c and ahead of it (the half
  *        disk its direction points into), weighted by their weights, into
- *        @p s (xx, yy, xy); criterion = "average" passes Growth::radius.
+ *        @p s (xx, yy, xy); criterion = "average" passes the crack's
+ *        `radius`, or Growth::radius (1.5 h) without one.
  *        @return the number of points averaged.
  */
 int growth_tip_stress(const Xefg *x, int c, int end, double radius,
@@ -249,6 +253,19 @@ int growth_rows(Sim *sim, Xefg *x, Growth *g, int c, const double a[2],
 int growth_cohesive(Sim *sim, Xefg *x, Growth *g, int c, int seg,
                     const double a[2], const double b[2], char *err,
                     size_t errlen);
+
+/**
+ * @brief The checkpoint section of a scene whose cracks grow (SEAM_CHECKPOINT,
+ *        subscribed when the first `growth` group is read, so that it
+ *        comes before the parameters' section): the events and the steps
+ *        waited; at restore the cracks (restored grown by stage 2) are
+ *        taken back to their set-up points and the events replayed
+ *        (growth_insert() at each event's step and time) into the
+ *        discretisation as set up, which the later sections then fill.
+ * @return 0, or -1 when the file is cut short, holds more events than the
+ *         room, or an event does not continue its crack's tip.
+ */
+int growth_checkpoint(Sim *sim, void *state, FILE *f, int save);
 
 /** @brief The history columns and report of a scene whose cracks grow.
  *  @return 0, or -1 when a seam is full. */

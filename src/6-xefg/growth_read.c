@@ -8,7 +8,9 @@
  *        (the default: the largest hoop stress of K_I, K_II) or
  *        "principal" (normal to sigma_1); and when, criterion = "average"
  *        (the default) or "tip" (growth_tip_zone()); and how fast at
- *        most, max_speed (growth_after_step()). CRAMP's `cracks.[k].growth` is stage 7's.
+ *        most, max_speed (growth_after_step()); and over how far ahead
+ *        criterion = "average" averages, radius. CRAMP's
+ *        `cracks.[k].growth` is stage 7's.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -18,7 +20,7 @@
 #include "scene_read.h"
 
 const char *const growth_keys[] = {"length", "max_segments", "direction",
-                                   "criterion", "max_speed", NULL};
+                                   "criterion", "max_speed", "radius", NULL};
 
 static void growth_release(void *state)
 {
@@ -37,6 +39,10 @@ static Growth *growth_make(Sim *sim, int index)
             free(g);
             return NULL;
         }
+        /* subscribed here, before the parameters' section is
+         * (xefg_prepare()): at restore the events are replayed first */
+        if (hooks_on_checkpoint(&sim->hooks, growth_checkpoint, g))
+            return NULL;
     }
     if (index >= g->ncrack) {
         XefgGrowthSettings *s = realloc(g->set, sizeof *s * (size_t)(index + 1));
@@ -70,14 +76,15 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
     if (!g)
         return scene_error(r, s, "growth", "out of memory");
     XefgGrowthSettings *set = &g->set[index];
-    double length = 0.0, most = 0.0, speed = 0.0;
+    double length = 0.0, most = 0.0, speed = 0.0, radius = 0.0;
     const char *direction = "hoop", *criterion = "average";
-    *set = (XefgGrowthSettings){1, 0.0, 0, 0, 0, 0.0,
+    *set = (XefgGrowthSettings){1, 0.0, 0, 0, 0, 0.0, 0.0,
                                 (int)config_setting_source_line(s)};
     int has_length = scene_number(r, s, "length", 0, 0.0, &length);
     int has_most = scene_number(r, s, "max_segments", 0, 0.0, &most);
     int has_speed = scene_number(r, s, "max_speed", 0, 0.0, &speed);
-    if (has_length < 0 || has_most < 0 || has_speed < 0 ||
+    int has_radius = scene_number(r, s, "radius", 0, 0.0, &radius);
+    if (has_length < 0 || has_most < 0 || has_speed < 0 || has_radius < 0 ||
         scene_string(r, s, "direction", 0, &direction) < 0 ||
         scene_string(r, s, "criterion", 0, &criterion) < 0)
         return -1;
@@ -109,7 +116,13 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
         return scene_error(r, at(s, "max_speed"), "max_speed", "%g: the "
                            "largest speed of a tip must be positive (leave "
                            "it out for no limit)", speed);
+    if (has_radius && !(radius > 0.0 && isfinite(radius)))
+        return scene_error(r, at(s, "radius"), "radius", "%g: the radius of "
+                           "the half disk ahead of a tip whose stress is "
+                           "averaged must be positive (leave it out for "
+                           "1.5 node spacings)", radius);
     set->length = length;
+    set->radius = radius;
     set->max_segments = (int)most;
     set->max_speed = speed;
     return 0;
