@@ -109,9 +109,10 @@ fields_range_wide(const Sim *sim, const Cracks *C, const int *list, int from,
  *  keeps none), listed in point order; then their pairs' fields, the list
  *  cut evenly among the threads (a crack's points may be few, and all in
  *  one thread's share of the points), each thread keeping in place those
- *  that key a pair. On one thread, in point order: their rows and keys, and
- *  the subscribers, so that rows and slots come in the order they have on
- *  one thread. */
+ *  that key a pair. On one thread, in point order: their rows (so that
+ *  rows and slots come in the order they have on one thread); then the
+ *  keys on threads, a row being its point's alone; then, on one thread in
+ *  point order, the subscribers. */
 static inline __attribute__((always_inline)) int
 key_fields(Sim *sim, const Cracks *C, StencilFn wide, int w)
 {
@@ -146,25 +147,35 @@ key_fields(Sim *sim, const Cracks *C, StencilFn wide, int w)
         if (t == 0)
             shares = nt;
     }
-    for (int t = 0; t < shares; t++)
+    for (int t = 0; t < shares; t++)        /* rows, in point order */
         for (int k = (int)((long)nnear * t / shares); k < end[t]; k++) {
-            int p = list[k], r = -1;
-            const signed char *field = &C->pair_field[w * p];
-            for (int a = 0; a < w; a++) {
-                if (!field[a])
-                    continue;                /* field 0: nothing to key */
-                if (field[a] < 0) {
+            int p = list[k];
+            for (int a = 0; a < w; a++)
+                if (C->pair_field[w * p + a] < 0) {
                     int node[STENCIL_MAX];
                     stencil_node_list(sim, wide, p, node);
                     return step_fail(sim, p, "crack crossings of one line (more "
                                      "than CROSSINGS_MAX)", node[a]);
                 }
-                if (r < 0 && (r = fields_row(sim, p)) < 0)
-                    return -1;
-                fields_row_key(&sim->fields, r, a, (unsigned)field[a] << C->side_shift);
-                if (C->ncrossed && cracks_tell_crossed(sim, C, p, a, &C->pair_hit[w * p + a]))
-                    return -1;               /* later stages' subscribers */
-            }
+            if (fields_row(sim, p) < 0)
+                return -1;
+        }
+#pragma omp parallel for num_threads(sim->threads) schedule(static, 1)
+    for (int t = 0; t < shares; t++)        /* keys: a row is its point's */
+        for (int k = (int)((long)nnear * t / shares); k < end[t]; k++) {
+            int p = list[k], r = sim->fields.row_of[p];
+            for (int a = 0; a < w; a++)
+                if (C->pair_field[w * p + a] > 0)
+                    fields_row_key(&sim->fields, r, a, (unsigned)C->pair_field[w * p + a]
+                                                           << C->side_shift);
+        }
+    for (int t = 0; C->ncrossed && t < shares; t++)   /* later stages' */
+        for (int k = (int)((long)nnear * t / shares); k < end[t]; k++) {
+            int p = list[k];
+            for (int a = 0; a < w; a++)
+                if (C->pair_field[w * p + a] > 0 &&
+                    cracks_tell_crossed(sim, C, p, a, &C->pair_hit[w * p + a]))
+                    return -1;               /* subscribers, in point order */
         }
     return 0;
 }
