@@ -87,10 +87,7 @@ void fields_begin_step(Sim *sim)
 }
 
 /// [fields_key]
-/** Add @p key to pair (@p p, @p a) in rows of @p n pairs (a constant
- *  STENCIL_NODES for linear rows, FieldTable::width for wider ones). */
-static inline __attribute__((always_inline)) int
-key_pair(Sim *sim, int p, int a, unsigned key, int n)
+int fields_row(Sim *sim, int p)
 {
     FieldTable *F = &sim->fields;
     int r = F->row_of[p];
@@ -100,9 +97,20 @@ key_pair(Sim *sim, int p, int a, unsigned key, int n)
         r = F->nrows++;
         F->row_of[p] = r;
         F->row_point[r] = p;
-        memset(&F->row_key[n * r], 0, (size_t)n * sizeof(unsigned));
+        memset(&F->row_key[F->width * r], 0, (size_t)F->width * sizeof(unsigned));
     }
-    F->row_key[n * r + a] |= key;
+    return r;
+}
+
+/** Add @p key to pair (@p p, @p a) in rows of @p n pairs (a constant
+ *  STENCIL_NODES for linear rows, FieldTable::width for wider ones). */
+static inline __attribute__((always_inline)) int
+key_pair(Sim *sim, int p, int a, unsigned key, int n)
+{
+    int r = fields_row(sim, p);
+    if (r < 0)
+        return -1;
+    sim->fields.row_key[n * r + a] |= key;
     return 0;
 }
 

@@ -49,6 +49,21 @@ int fields_enable(struct Sim *sim);
 void fields_begin_step(struct Sim *sim);
 
 /**
+ * @brief The pair row of point @p p, made (every key 0) when it has none:
+ *        rows come in the order of these calls. One thread at a time; the
+ *        keys of distinct rows may then be set on threads (fields_row_key()).
+ * @return the row, or -1 when memory is exhausted (Sim::fail filled).
+ */
+int fields_row(struct Sim *sim, int p);
+
+/** @brief Add @p key bits to pair @p a of row @p r, made by fields_row():
+ *         a row is its point's alone, so threads may key distinct rows. */
+static inline void fields_row_key(FieldTable *F, int r, int a, unsigned key)
+{
+    F->row_key[F->width * r + a] |= key;
+}
+
+/**
  * @brief Add @p key bits to the key of pair (point @p p, corner @p a) of a
  *        table of linear rows (FieldTable::width == STENCIL_NODES: stage 8
  *        keys a wider run.shape with fields_key_wide()).

@@ -7,23 +7,6 @@
 #include "cracks.h"
 #include "step.h"
 
-int crossings_test(const Cracks *C, int crack, int k, double px, double py,
-                   double nx, double ny, Crossings *x)
-{
-    int side = crack_segment_side(&C->crack[crack], k, px, py, nx, ny);
-    return side ? crossings_add(x, crack, k, side) : 0;
-}
-
-int crossings_add(Crossings *x, int crack, int k, int side)
-{
-    if (x->n == CROSSINGS_MAX) {
-        x->lost++;
-        return -1;
-    }
-    x->hit[x->n++] = (CrackHit){crack, k, side};
-    return 0;
-}
-
 /// [crossings_result]
 int crossings_result(const Crossings *x, CrackHit *hit)
 {
@@ -56,33 +39,41 @@ int crossings_result(const Crossings *x, CrackHit *hit)
 }
 /// [crossings_result]
 
-int crack_field(const Cracks *C, int cell, double px, double py, double nx,
-                double ny, CrackHit *hit)
-{
-    Crossings x;
-    CrackHit h;
-    x.n = x.lost = 0;
-    C->search->visit(C, cell, px, py, nx, ny, &x);
-    if (x.lost)
-        return -1;
-    return crossings_result(&x, hit ? hit : &h);
-}
-
 /// [crossing_plain]
 /** Every segment of every crack, in order. */
 static void plain_visit(const Cracks *C, int cell, double px, double py,
                         double nx, double ny, Crossings *x)
 {
+    const Crack *crack = C->crack;
+    int ncracks = C->ncracks;
     (void)cell;
-    for (int c = 0; c < C->ncracks; c++)
-        for (int k = 0; k + 1 < C->crack[c].n; k++) {
-            int side = crack_segment_side(&C->crack[c], k, px, py, nx, ny);
+    for (int c = 0; c < ncracks; c++)
+        for (int k = 0, segments = crack[c].n - 1; k < segments; k++) {
+            int side = crack_segment_side(&crack[c], k, px, py, nx, ny);
             if (side)
                 crossings_add(x, c, k, side);
         }
 }
 
-const CrossingSearch crossing_plain = {"plain", plain_visit, NULL, NULL};
+/** plain_visit() of a point's @p n lines at once, segment after segment. */
+static void plain_visit_lines(const Cracks *C, int cell, double px, double py,
+                              int n, const double *nx, const double *ny,
+                              Crossings *x)
+{
+    const Crack *crack = C->crack;
+    int ncracks = C->ncracks;
+    (void)cell;
+    for (int c = 0; c < ncracks; c++)
+        for (int k = 0, segments = crack[c].n - 1; k < segments; k++)
+            for (int a = 0; a < n; a++) {
+                int side = crack_segment_side(&crack[c], k, px, py, nx[a], ny[a]);
+                if (side)
+                    crossings_add(&x[a], c, k, side);
+            }
+}
+
+const CrossingSearch crossing_plain = {"plain", plain_visit, NULL, NULL,
+                                       plain_visit_lines};
 /// [crossing_plain]
 
 int cracks_task7(Sim *sim, void *state, Seam seam)

@@ -61,6 +61,12 @@ typedef struct CrossingSearch {
     int (*update)(struct Cracks *C, const Grid *g);
     /** Free the search's own data (Cracks::search_state); NULL when none. */
     void (*release)(struct Cracks *C);
+    /** As @c visit, for the lines from (px, py) to the @p n nodes (nx[a],
+     *  ny[a]) of one point at once, line a's crossings into x[a], each in
+     *  the order @c visit finds them: one call a point instead of one a
+     *  pair. NULL: Task 1 calls @c visit line by line. */
+    void (*visit_lines)(const struct Cracks *C, int cell, double px, double py,
+                        int n, const double *nx, const double *ny, Crossings *x);
 } CrossingSearch;
 /// [crossing_search]
 
@@ -96,15 +102,15 @@ typedef struct Cracks {
     int ncrossed;                 /**< how many */
     /** Per point, FieldTable::width at a time: the field of each pair
      *  (0, 1, 2; -1 for too many crossings), found on threads in Task 1
-     *  and keyed on one thread in point order (the order of the rows). */
+     *  (only the points it lists in @c keyed are read back). */
     signed char *pair_field;
     /** Likewise: the crossing that decided each keyed pair, kept for the
      *  subscribers (NULL while there are none). */
     CrackHit *pair_hit;
-    /** Per point: the points that key a pair, each thread's share of
-     *  the points listing its own from the share's first index on. */
+    /** Room for a list of points: Task 1 lists the points near a crack
+     *  there, in point order, then, in place, those that key a pair. */
     int *keyed;
-    /** Per thread (Sim::threads): one past its last entry in @c keyed. */
+    /** Per thread (Sim::threads): where its part of @c keyed ends. */
     int *keyed_end;
     const CrossingSearch *search; /**< the scene's crossing search */
     void *search_state;           /**< the search's own data */
@@ -140,14 +146,26 @@ int crack_segment_side(const Crack *c, int k, double px, double py, double nx,
 int crack_crossing(const Crack *c, double px, double py, double nx, double ny);
 /// [crossing_tests]
 
-/** @brief Test segment @p k of crack @p crack and record a crossing in
- *         @p x. @return 0, or -1 when @p x is full. */
-int crossings_test(const Cracks *C, int crack, int k, double px, double py,
-                   double nx, double ny, Crossings *x);
-
 /** @brief Record a crossing of segment @p k of crack @p crack with @p side
  *         (+1 or -1) in @p x. @return 0, or -1 when @p x is full. */
-int crossings_add(Crossings *x, int crack, int k, int side);
+static inline int crossings_add(Crossings *x, int crack, int k, int side)
+{
+    if (x->n == CROSSINGS_MAX) {
+        x->lost++;
+        return -1;
+    }
+    x->hit[x->n++] = (CrackHit){crack, k, side};
+    return 0;
+}
+
+/** @brief Test segment @p k of crack @p crack and record a crossing in
+ *         @p x. @return 0, or -1 when @p x is full. */
+static inline int crossings_test(const Cracks *C, int crack, int k, double px,
+                                 double py, double nx, double ny, Crossings *x)
+{
+    int side = crack_segment_side(&C->crack[crack], k, px, py, nx, ny);
+    return side ? crossings_add(x, crack, k, side) : 0;
+}
 
 /**
  * @brief The field of a line from its crossings, independent of their
@@ -159,6 +177,18 @@ int crossings_add(Crossings *x, int crack, int k, int side);
  */
 int crossings_result(const Crossings *x, CrackHit *hit);
 
+/** @brief The field of a line from its crossings @p x, as crack_field()
+ *         gives it: -1 when some were lost, 0 when there are none, else
+ *         crossings_result() (@p hit, which may be NULL, filled). */
+static inline __attribute__((always_inline)) int
+crossings_field(const Crossings *x, CrackHit *hit)
+{
+    CrackHit h;
+    if (x->lost)
+        return -1;
+    return x->n ? crossings_result(x, hit ? hit : &h) : 0;   /* none: field 0 */
+}
+
 /**
  * @brief Which field the pair (point, node) belongs to (eq. 2): 0 when
  *        the segment from the point to the node crosses no crack, 1 when
@@ -168,8 +198,15 @@ int crossings_result(const Crossings *x, CrackHit *hit);
  *        the crack, segment and side. -1 when a line crosses more than
  *        CROSSINGS_MAX segments.
  */
-int crack_field(const Cracks *C, int cell, double px, double py, double nx,
-                double ny, CrackHit *hit);
+static inline __attribute__((always_inline)) int
+crack_field(const Cracks *C, int cell, double px, double py,
+            double nx, double ny, CrackHit *hit)
+{
+    Crossings x;
+    x.n = x.lost = 0;
+    C->search->visit(C, cell, px, py, nx, ny, &x);
+    return crossings_field(&x, hit);
+}
 
 /** @brief The plain search: every segment of every crack. */
 extern const CrossingSearch crossing_plain;

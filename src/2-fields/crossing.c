@@ -23,16 +23,18 @@ static int area_sign(double x1, double y1, double x2, double y2, double x3,
  * end point 4 (@p last), and a line through the crack's first point only
  * grazes the crack (@p first).
  */
-static int segment_crossing(double x1, double y1, double x2, double y2,
-                            double x3, double y3, double x4, double y4,
-                            int first, int last)
+static inline __attribute__((always_inline)) int
+segment_crossing(double x1, double y1, double x2, double y2, double x3,
+                 double y3, double x4, double y4, int first, int last)
 {
+    int a341 = area_sign(x3, y3, x4, y4, x1, y1);
+    int a342 = area_sign(x3, y3, x4, y4, x2, y2);
+    if (a341 == 0 || a341 * a342 > 0) /* particle on the crack's line, or */
+        return 0;                     /* particle and node on one side */
     int a123 = area_sign(x1, y1, x2, y2, x3, y3);
     int a124 = area_sign(x1, y1, x2, y2, x4, y4);
     if (a123 * a124 > 0)          /* both ends of the crack on one side */
         return 0;
-    int a341 = area_sign(x3, y3, x4, y4, x1, y1);
-    int a342 = area_sign(x3, y3, x4, y4, x2, y2);
     /* subtask 3, particle above: (-,+,+,-) (-,+,+,0) (0,+,+,0) (-,0,+,0) */
     if (a341 > 0 && a342 <= 0) {
         if (a123 < 0 && a124 > 0)

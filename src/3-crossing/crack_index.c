@@ -144,7 +144,18 @@ static void index_visit(const Cracks *C, int cell, double px, double py,
         crossings_test(C, ix->e[e].crack, ix->e[e].seg, px, py, nx, ny, x);
 }
 
+/** index_visit() of a point's @p n lines at once, entry after entry. */
+static void index_visit_lines(const Cracks *C, int cell, double px, double py,
+                              int n, const double *nx, const double *ny,
+                              Crossings *x)
+{
+    const SegmentIndex *ix = C->search_state;
+    for (int e = ix->head[cell]; e >= 0; e = ix->e[e].next)
+        for (int a = 0; a < n; a++)
+            crossings_test(C, ix->e[e].crack, ix->e[e].seg, px, py, nx[a], ny[a], &x[a]);
+}
+
 const CrossingSearch crossing_indexed = {
-    "indexed", index_visit, index_update, index_release,
+    "indexed", index_visit, index_update, index_release, index_visit_lines,
 };
 /// [index_visit]

@@ -60,6 +60,10 @@ static const Case cases[] = {
     /* Task 1 through the index (stage 3's search, named) over a kinked crack */
     {"tests/3-crossing/scenes/dcb_kinked.cfg",
      "run.time=20 run.snapshots=1 run.crack_search=\\\"indexed\\\""},
+    /* and through the screened search, whose fields are found line by line
+       (it has no visit_lines) */
+    {"tests/3-crossing/scenes/dcb_kinked.cfg",
+     "run.time=20 run.snapshots=1 run.crack_search=\\\"screened\\\""},
     {"tests/1-mpm/scenes/disks.cfg", "run.shape=gimp run.time=1"},  /* 3 x 3 */
     {"tests/8-shapes/scenes/cpdi_stretch.cfg", ""},              /* unstable */
     {"tests/1-mpm/scenes/spinning_disk.cfg",                      /* APIC */

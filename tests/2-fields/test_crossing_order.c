@@ -89,7 +89,7 @@ static void shuffled_release(Cracks *C)
 }
 
 static const CrossingSearch shuffled = {"shuffled", shuffled_visit,
-                                        shuffled_update, shuffled_release};
+                                        shuffled_update, shuffled_release, NULL};
 
 /* three cracks on a lattice of quarter units, so that particles and nodes
    fall exactly on segments, their lines and their vertices: a zig-zag

@@ -42,5 +42,5 @@ static void screened_visit(const Cracks *C, int cell, double px, double py,
 }
 
 const CrossingSearch crossing_screened = {
-    "screened", screened_visit, screened_update, screened_release,
+    "screened", screened_visit, screened_update, screened_release, NULL,
 };
