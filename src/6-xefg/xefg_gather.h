@@ -16,8 +16,9 @@
 typedef struct XefgGather {
     long version;    /**< Xefg::rows_version it was built for */
     int *col_start;  /**< per parameter: its entries (ndof + 1 offsets) */
-    int *col_entry;  /**< an entry k of the Gauss rows, by Gauss point */
-    int *col_point;  /**< the Gauss point of that entry */
+    double *col_grad; /**< each entry's Nx, Ny (2 per), copied from the
+                           Gauss rows: read in a stream */
+    int *col_point;  /**< the Gauss point of each entry, ascending */
     int *cell_start; /**< per node: its Gauss points (nnode + 1 offsets) */
     int *cell_point; /**< the Gauss points of each node's cell, ascending */
     double *ws;      /**< w sigma of each Gauss point (3 per) */
