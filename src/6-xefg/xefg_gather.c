@@ -78,7 +78,8 @@ int xefg_gather_build(Xefg *x, const Sim *sim)
     G->col_point = malloc(sizeof(int) * nent);
     G->cell_start = malloc(sizeof(int) * ((size_t)x->nnode + 1));
     G->cell_point = malloc(sizeof(int) * ngauss);
-    G->ws = malloc(3 * sizeof(double) * ngauss);
+    size_t nws = 3 * ngauss > 2 * ndof ? 3 * ngauss : 2 * ndof;
+    G->ws = malloc(sizeof(double) * nws);
     if (!G->col_start || !G->col_grad || !G->col_point || !G->cell_start ||
         !G->cell_point || !G->ws)
         return -1;                           /* freed with x */
@@ -107,73 +108,61 @@ static inline void gather_entry(const XefgGather *G, int e, double *fx,
 }
 
 /// [xefg_gather_force]
-void xefg_gather_force(const Xefg *x, const Sim *sim, double *f)
+void xefg_gather_force(const Xefg *x, double *f)
 {
     const XefgGather *G = x->gather;
-    double *ws = G->ws;
     int nb = (x->ndof + LANES - 1) / LANES;
-#pragma omp parallel num_threads(sim->threads)
-    {
 #pragma omp for schedule(static)
-        for (int g = 0; g < x->ngauss; g++)          /* w sigma, once */
-            for (int c = 0; c < 3; c++)
-                ws[3 * g + c] = x->gw[g] * x->gs[3 * g + c];
-#pragma omp for schedule(static)
-        for (int b = 0; b < nb; b++) {      /* each parameter its own sum */
-            double fx[LANES], fy[LANES];
-            int e0[LANES], e1[LANES], len = 0;
-            for (int j = 0; j < LANES; j++) {
-                int q = LANES * b + j;
-                e0[j] = q < x->ndof ? G->col_start[q] : 0;
-                e1[j] = q < x->ndof ? G->col_start[q + 1] : 0;
-                int n = e1[j] - e0[j];
-                len = j == 0 || n < len ? n : len;
-            }
-            double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0, x2 = 0.0, y2 = 0.0,
-                   x3 = 0.0, y3 = 0.0;          /* in registers, not fx[] */
-            for (int i = 0; i < len; i++) {     /* the lanes side by side */
-                gather_entry(G, e0[0] + i, &x0, &y0);
-                gather_entry(G, e0[1] + i, &x1, &y1);
-                gather_entry(G, e0[2] + i, &x2, &y2);
-                gather_entry(G, e0[3] + i, &x3, &y3);
-            }
-            fx[0] = x0, fy[0] = y0, fx[1] = x1, fy[1] = y1;
-            fx[2] = x2, fy[2] = y2, fx[3] = x3, fy[3] = y3;
-            for (int j = 0; j < LANES; j++) {       /* and their rests */
-                for (int e = e0[j] + len; e < e1[j]; e++)
-                    gather_entry(G, e, &fx[j], &fy[j]);
-                if (LANES * b + j < x->ndof) {
-                    f[2 * (LANES * b + j)] = fx[j];
-                    f[2 * (LANES * b + j) + 1] = fy[j];
-                }
+    for (int b = 0; b < nb; b++) {          /* each parameter its own sum */
+        double fx[LANES], fy[LANES];
+        int e0[LANES], e1[LANES], len = 0;
+        for (int j = 0; j < LANES; j++) {
+            int q = LANES * b + j;
+            e0[j] = q < x->ndof ? G->col_start[q] : 0;
+            e1[j] = q < x->ndof ? G->col_start[q + 1] : 0;
+            int n = e1[j] - e0[j];
+            len = j == 0 || n < len ? n : len;
+        }
+        double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0, x2 = 0.0, y2 = 0.0,
+               x3 = 0.0, y3 = 0.0;              /* in registers, not fx[] */
+        for (int i = 0; i < len; i++) {         /* the lanes side by side */
+            gather_entry(G, e0[0] + i, &x0, &y0);
+            gather_entry(G, e0[1] + i, &x1, &y1);
+            gather_entry(G, e0[2] + i, &x2, &y2);
+            gather_entry(G, e0[3] + i, &x3, &y3);
+        }
+        fx[0] = x0, fy[0] = y0, fx[1] = x1, fy[1] = y1;
+        fx[2] = x2, fy[2] = y2, fx[3] = x3, fy[3] = y3;
+        for (int j = 0; j < LANES; j++) {           /* and their rests */
+            for (int e = e0[j] + len; e < e1[j]; e++)
+                gather_entry(G, e, &fx[j], &fy[j]);
+            if (LANES * b + j < x->ndof) {
+                f[2 * (LANES * b + j)] = fx[j];
+                f[2 * (LANES * b + j) + 1] = fy[j];
             }
         }
     }
 }
 /// [xefg_gather_force]
 
-void xefg_gather_cells(const Xefg *x, Sim *sim)
+void xefg_gather_cell(const Xefg *x, int I, Particles *P)
 {
     const XefgGather *G = x->gather;
-    Particles *P = &sim->pts;
-#pragma omp parallel for num_threads(sim->threads) schedule(static)
-    for (int I = 0; I < x->nnode; I++) {
-        double s[3] = {0.0, 0.0, 0.0}, e[3] = {0.0, 0.0, 0.0};
-        for (int j = G->cell_start[I]; j < G->cell_start[I + 1]; j++) {
-            int g = G->cell_point[j];
-            double w = x->gw[g] / x->cell_w[I];
-            for (int c = 0; c < 3; c++) {
-                s[c] += w * x->gs[3 * g + c];
-                e[c] += w * x->ge[3 * g + c];
-            }
+    double s[3] = {0.0, 0.0, 0.0}, e[3] = {0.0, 0.0, 0.0};
+    for (int j = G->cell_start[I]; j < G->cell_start[I + 1]; j++) {
+        int g = G->cell_point[j];
+        double w = x->gw[g] / x->cell_w[I];
+        for (int c = 0; c < 3; c++) {
+            s[c] += w * x->gs[3 * g + c];
+            e[c] += w * x->ge[3 * g + c];
         }
-        P->sxx[I] = s[0];
-        P->syy[I] = s[1];
-        P->sxy[I] = s[2];
-        P->exx[I] = e[0];
-        P->eyy[I] = e[1];
-        P->exy[I] = e[2];
     }
+    P->sxx[I] = s[0];
+    P->syy[I] = s[1];
+    P->sxy[I] = s[2];
+    P->exx[I] = e[0];
+    P->eyy[I] = e[1];
+    P->exy[I] = e[2];
 }
 
 void xefg_gather_free(XefgGather *G)
