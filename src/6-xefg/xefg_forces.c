@@ -15,8 +15,8 @@
  *  @p du, grad du = sum du_q B_q, and its stress by its material's law
  *  (small strain, eq. 36 of chapter 1); the strain added to @p e (NULL:
  *  not kept). */
-static void gauss_update(const Xefg *x, const Sim *sim, int g,
-                         const double *du, double *s, double *e)
+static inline void gauss_update(const Xefg *x, const Sim *sim, int g,
+                                const double *du, double *s, double *e)
 {
     const ShapeRows *R = &x->gauss;
     double uxx = 0.0, uxy = 0.0, uyx = 0.0, uyy = 0.0;
@@ -107,7 +107,7 @@ double xefg_kinetic_energy(const Xefg *x)
 }
 
 /** Gauss point @p g's strain energy, w W(sigma, eps). */
-static double strain_term(const Xefg *x, int g)
+static inline double strain_term(const Xefg *x, int g)
 {
     const double *t = x->gs + 3 * g, *e = x->ge + 3 * g;
     return x->gw[g] * material_energy_density(t[0], t[1], t[2], e[0], e[1],

@@ -93,54 +93,20 @@ int xefg_gather_current(const Xefg *x)
     return x->gather && x->gather->version == x->rows_version;
 }
 
-/** Parameters summed side by side: each sum is a chain of additions that
- *  waits on the one before (a floating-point add's latency); four sums
- *  interleaved keep the adder busy, each still in its own order. */
-enum { LANES = 4 };
-
-/** Entry @p e's share of its parameter's force, added to @p fx, @p fy. */
-static inline void gather_entry(const XefgGather *G, int e, double *fx,
-                                double *fy)
-{
-    const double *s = G->ws + 3 * G->col_point[e], *b = G->col_grad + 2 * e;
-    *fx += s[0] * b[0] + s[2] * b[1];
-    *fy += s[2] * b[0] + s[1] * b[1];
-}
-
 /// [xefg_gather_force]
 void xefg_gather_force(const Xefg *x, double *f)
 {
     const XefgGather *G = x->gather;
-    int nb = (x->ndof + LANES - 1) / LANES;
 #pragma omp for schedule(static)
-    for (int b = 0; b < nb; b++) {          /* each parameter its own sum */
-        double fx[LANES], fy[LANES];
-        int e0[LANES], e1[LANES], len = 0;
-        for (int j = 0; j < LANES; j++) {
-            int q = LANES * b + j;
-            e0[j] = q < x->ndof ? G->col_start[q] : 0;
-            e1[j] = q < x->ndof ? G->col_start[q + 1] : 0;
-            int n = e1[j] - e0[j];
-            len = j == 0 || n < len ? n : len;
+    for (int q = 0; q < x->ndof; q++) {     /* each parameter its own sum */
+        double fx = 0.0, fy = 0.0;
+        for (int e = G->col_start[q]; e < G->col_start[q + 1]; e++) {
+            const double *s = G->ws + 3 * G->col_point[e], *b = G->col_grad + 2 * e;
+            fx += s[0] * b[0] + s[2] * b[1];
+            fy += s[2] * b[0] + s[1] * b[1];
         }
-        double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0, x2 = 0.0, y2 = 0.0,
-               x3 = 0.0, y3 = 0.0;              /* in registers, not fx[] */
-        for (int i = 0; i < len; i++) {         /* the lanes side by side */
-            gather_entry(G, e0[0] + i, &x0, &y0);
-            gather_entry(G, e0[1] + i, &x1, &y1);
-            gather_entry(G, e0[2] + i, &x2, &y2);
-            gather_entry(G, e0[3] + i, &x3, &y3);
-        }
-        fx[0] = x0, fy[0] = y0, fx[1] = x1, fy[1] = y1;
-        fx[2] = x2, fy[2] = y2, fx[3] = x3, fy[3] = y3;
-        for (int j = 0; j < LANES; j++) {           /* and their rests */
-            for (int e = e0[j] + len; e < e1[j]; e++)
-                gather_entry(G, e, &fx[j], &fy[j]);
-            if (LANES * b + j < x->ndof) {
-                f[2 * (LANES * b + j)] = fx[j];
-                f[2 * (LANES * b + j) + 1] = fy[j];
-            }
-        }
+        f[2 * q] = fx;
+        f[2 * q + 1] = fy;
     }
 }
 /// [xefg_gather_force]
