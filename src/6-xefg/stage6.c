@@ -13,6 +13,7 @@
 #include "checkpoint.h"
 #include "cohesive.h"
 #include "growth.h"
+#include "output.h"
 #include "quadrature.h"
 #include "scene_read.h"
 #include "xefg.h"
@@ -125,7 +126,8 @@ static int xefg_history(const Sim *sim, void *state, FILE *f, int header)
     const Xefg *x = xefg_of(sim);
     if (header)
         return fprintf(f, ",xefg_kinetic,xefg_strain") < 0 ? -1 : 0;
-    return fprintf(f, ",%.9g,%.9g", xefg_kinetic_energy(x),
+    int d = output_digits(sim, 9);      /* run.precision = "full": 17 */
+    return fprintf(f, ",%.*g,%.*g", d, xefg_kinetic_energy(x), d,
                    xefg_strain_energy(x, sim)) < 0 ? -1 : 0;
 }
 

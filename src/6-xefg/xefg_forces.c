@@ -15,8 +15,8 @@
  *  @p du, grad du = sum du_q B_q, and its stress by its material's law
  *  (small strain, eq. 36 of chapter 1); the strain added to @p e (NULL:
  *  not kept). */
-static void gauss_update(const Xefg *x, const Sim *sim, int g,
-                         const double *du, double *s, double *e)
+static inline void gauss_update(const Xefg *x, const Sim *sim, int g,
+                                const double *du, double *s, double *e)
 {
     const ShapeRows *R = &x->gauss;
     double uxx = 0.0, uxy = 0.0, uyx = 0.0, uyy = 0.0;
@@ -74,10 +74,20 @@ void xefg_strain_update(const Xefg *x, const Sim *sim, const double *du,
 void xefg_update_and_force(const Xefg *x, const Sim *sim, const double *du,
                            double *f)
 {
-    xefg_strain_update(x, sim, du, x->gs, x->ge);   /* on the threads */
-    if (xefg_gather_current(x)) {                   /* the same sums, turned */
-        xefg_gather_force(x, sim, f);
+    if (xefg_gather_current(x)) {       /* one parallel region, two loops */
+        double *ws = x->gather->ws;
+#pragma omp parallel num_threads(sim->threads)
+        {
+#pragma omp for schedule(static)
+            for (int g = 0; g < x->ngauss; g++) {   /* sigma, then w sigma */
+                gauss_update(x, sim, g, du, x->gs + 3 * g, x->ge + 3 * g);
+                for (int c = 0; c < 3; c++)
+                    ws[3 * g + c] = x->gw[g] * x->gs[3 * g + c];
+            }
+            xefg_gather_force(x, f);                /* the same sums, turned */
+        }
     } else {
+        xefg_strain_update(x, sim, du, x->gs, x->ge);
         memset(f, 0, 2 * sizeof(double) * (size_t)x->ndof);
         for (int g = 0; g < x->ngauss; g++)         /* in order */
             gauss_scatter(&x->gauss, g, x->gw[g], x->gs + 3 * g, f);
@@ -96,15 +106,28 @@ double xefg_kinetic_energy(const Xefg *x)
     return k;
 }
 
+/** Gauss point @p g's strain energy, w W(sigma, eps). */
+static inline double strain_term(const Xefg *x, int g)
+{
+    const double *t = x->gs + 3 * g, *e = x->ge + 3 * g;
+    return x->gw[g] * material_energy_density(t[0], t[1], t[2], e[0], e[1],
+                                              e[2]);
+}
+
 double xefg_strain_energy(const Xefg *x, const Sim *sim)
 {
-    (void)sim;
     double s = 0.0;
-    for (int g = 0; g < x->ngauss; g++) {
-        const double *t = x->gs + 3 * g, *e = x->ge + 3 * g;
-        s += x->gw[g] * material_energy_density(t[0], t[1], t[2], e[0], e[1],
-                                                e[2]);
+    if (!x->gather) {                               /* one thread */
+        for (int g = 0; g < x->ngauss; g++)
+            s += strain_term(x, g);
+        return s;
     }
+    double *t = x->gather->ws;          /* the terms on the threads, */
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
+    for (int g = 0; g < x->ngauss; g++)
+        t[g] = strain_term(x, g);
+    for (int g = 0; g < x->ngauss; g++)  /* summed in order: the same bits */
+        s += t[g];
     return s;
 }
 
@@ -127,13 +150,15 @@ void xefg_to_points(const Xefg *x, Sim *sim)
         P->y[I] = x->Y[I] + uy;
         P->vx[I] = vx;
         P->vy[I] = vy;
+        if (gather) {                               /* cell average, turned */
+            xefg_gather_cell(x, I, P);
+            continue;
+        }
         P->sxx[I] = P->syy[I] = P->sxy[I] = 0.0;
         P->exx[I] = P->eyy[I] = P->exy[I] = 0.0;
     }
-    if (gather) {                                   /* cell averages, turned */
-        xefg_gather_cells(x, sim);
+    if (gather)
         return;
-    }
     for (int g = 0; g < x->ngauss; g++) {          /* cell averages */
         int I = x->gnode[g];
         double w = x->gw[g] / x->cell_w[I];

@@ -16,11 +16,15 @@
 typedef struct XefgGather {
     long version;    /**< Xefg::rows_version it was built for */
     int *col_start;  /**< per parameter: its entries (ndof + 1 offsets) */
-    int *col_entry;  /**< an entry k of the Gauss rows, by Gauss point */
-    int *col_point;  /**< the Gauss point of that entry */
+    double *col_grad; /**< each entry's Nx, Ny (2 per), copied from the
+                           Gauss rows: read in a stream */
+    int *col_point;  /**< the Gauss point of each entry, ascending */
     int *cell_start; /**< per node: its Gauss points (nnode + 1 offsets) */
     int *cell_point; /**< the Gauss points of each node's cell, ascending */
-    double *ws;      /**< w sigma of each Gauss point (3 per) */
+    double *ws;      /**< scratch, 3 per Gauss point (2 per parameter if
+                          more): w sigma of each Gauss point for
+                          xefg_gather_force(), the terms of an energy's
+                          sum */
 } XefgGather;
 
 /**
@@ -37,16 +41,18 @@ void xefg_gather_refresh(Xefg *x);
 int xefg_gather_current(const Xefg *x);
 
 /**
- * @brief Internal forces of the stresses Xefg::gs into @p f (2 per
- *        parameter) on the threads, each parameter summing its Gauss
- *        points in ascending order: the bits of xefg_internal_force().
+ * @brief Internal forces of the weighted stresses XefgGather::ws (w sigma,
+ *        3 per Gauss point) into @p f (2 per parameter), each parameter
+ *        summing its Gauss points in ascending order: the bits of
+ *        xefg_internal_force(). An `omp for`: called inside a parallel
+ *        region (xefg_update_and_force()), whose threads share it.
  */
-void xefg_gather_force(const Xefg *x, const Sim *sim, double *f);
+void xefg_gather_force(const Xefg *x, double *f);
 
-/** @brief The cell averages of stress and strain of xefg_to_points(),
- *         each node summing its Gauss points in ascending order, on the
- *         threads. */
-void xefg_gather_cells(const Xefg *x, Sim *sim);
+/** @brief Node @p I's cell average of stress and strain into @p P, its
+ *         Gauss points summed in ascending order: the bits of the
+ *         scatter in xefg_to_points(). */
+void xefg_gather_cell(const Xefg *x, int I, Particles *P);
 
 /** @brief Release the gather. */
 void xefg_gather_free(XefgGather *G);

@@ -48,22 +48,23 @@ static void external_force(const Xefg *x, const Sim *sim, double t, double *f)
 static int check_finite(const Xefg *x, Sim *sim)
 {
     int qbad = x->ndof, gbad = x->ngauss;
-#pragma omp parallel for if (x->gather) num_threads(sim->threads) \
-    schedule(static) reduction(min : qbad)
-    for (int q = 0; q < x->ndof; q++)
-        if (!isfinite(x->v[2 * q]) || !isfinite(x->v[2 * q + 1]))
-            qbad = q < qbad ? q : qbad;
+#pragma omp parallel if (x->gather) num_threads(sim->threads)
+    {                                               /* one region, two loops */
+#pragma omp for schedule(static) reduction(min : qbad)
+        for (int q = 0; q < x->ndof; q++)
+            if (!isfinite(x->v[2 * q]) || !isfinite(x->v[2 * q + 1]))
+                qbad = q < qbad ? q : qbad;
+#pragma omp for schedule(static) reduction(min : gbad)
+        for (int g = 0; g < x->ngauss; g++)
+            for (int k = 0; k < 3; k++)
+                if (!isfinite(x->gs[3 * g + k]))
+                    gbad = g < gbad ? g : gbad;
+    }
     if (qbad < x->ndof) {
         const double *v = x->v + 2 * qbad;
         return step_fail(sim, x->dof_node[qbad], "velocity",
                          isfinite(v[0]) ? v[1] : v[0]);
     }
-#pragma omp parallel for if (x->gather) num_threads(sim->threads) \
-    schedule(static) reduction(min : gbad)
-    for (int g = 0; g < x->ngauss; g++)
-        for (int k = 0; k < 3; k++)
-            if (!isfinite(x->gs[3 * g + k]))
-                gbad = g < gbad ? g : gbad;
     for (int k = 0; gbad < x->ngauss && k < 3; k++)
         if (!isfinite(x->gs[3 * gbad + k]))
             return step_fail(sim, x->gnode[gbad], "stress", x->gs[3 * gbad + k]);
@@ -108,20 +109,49 @@ static int check_in_grid(Sim *sim)
     return 0;
 }
 
-/** The energy the damping -kappa M v takes out in a half kick from @p v
- *  with accelerations @p a: a component's kinetic energy changes by its
- *  mean velocity times the impulse, and the damping's share of that
- *  impulse is -kappa v dt / 2 (the split is exact: the change is linear in
- *  the force). On one thread, in order: the same bits on any number. */
-static double damping_work(const Xefg *x, const double *v, const double *a,
-                           double dt, double kappa)
+/** A half kick of a velocity component @p v: v + dt/2 (a - kappa v). */
+static inline double kicked(double v, double a, double dt, double kappa)
 {
-    double w = 0.0;
-    for (int q = 0; q < x->ndof; q++)
-        for (int i = 2 * q; i < 2 * q + 2; i++) {
-            double v1 = v[i] + 0.5 * dt * (a[i] - kappa * v[i]);
-            w += x->mass[q] * 0.5 * (v[i] + v1) * kappa * v[i] * 0.5 * dt;
-        }
+    return v + 0.5 * dt * (a - kappa * v);
+}
+
+/** The energy the damping -kappa M v takes out of a component of mass
+ *  @p m in a half kick from @p v to @p v1: its kinetic energy changes by
+ *  its mean velocity times the impulse, and the damping's share of that
+ *  impulse is -kappa v dt / 2 (the split is exact: the change is linear in
+ *  the force). */
+static inline double damping_term(double m, double v, double v1, double dt,
+                                  double kappa)
+{
+    return m * 0.5 * (v + v1) * kappa * v * 0.5 * dt;
+}
+
+/** The half kick v += dt/2 (a - kappa M v) of every parameter, and the
+ *  energy the damping takes in it (kappa != 0), summed in the order of
+ *  the components: the same bits on any number of threads. On threads
+ *  (a gather) each component's term goes to scratch in the kick's loop
+ *  and is summed after it; on one, a pass before the kick sums them. */
+static double kick(Xefg *x, const Sim *sim, double dt, double kappa)
+{
+    double *v = x->v, *t = x->gather ? x->gather->ws : NULL, w = 0.0;
+    const double *a = x->a;
+    int n2 = 2 * x->ndof;
+    if (!t) {                                       /* one thread */
+        for (int k = 0; kappa != 0.0 && k < n2; k++)
+            w += damping_term(x->mass[k / 2], v[k], kicked(v[k], a[k], dt, kappa),
+                              dt, kappa);
+        for (int k = 0; k < n2; k++)
+            v[k] = kicked(v[k], a[k], dt, kappa);
+        return w;
+    }
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
+    for (int k = 0; k < n2; k++) {
+        double v1 = kicked(v[k], a[k], dt, kappa);
+        t[k] = damping_term(x->mass[k / 2], v[k], v1, dt, kappa);
+        v[k] = v1;
+    }
+    for (int k = 0; kappa != 0.0 && k < n2; k++)
+        w += t[k];
     return w;
 }
 
@@ -132,11 +162,7 @@ int xefg_step(Sim *sim)
     double dt = sim->dt, kappa = sim->scene.run.damping;
     double *v = x->v, *a = x->a, *du = x->f;    /* each k its own: threads */
     int n2 = 2 * x->ndof;
-    if (kappa != 0.0)                               /* what damping takes */
-        x->w_damped += damping_work(x, v, a, dt, kappa);
-#pragma omp parallel for if (x->gather) num_threads(sim->threads) schedule(static)
-    for (int k = 0; k < n2; k++)                    /* v(t + dt/2) */
-        v[k] += 0.5 * dt * (a[k] - kappa * v[k]);
+    x->w_damped += kick(x, sim, dt, kappa);         /* v(t + dt/2) */
     xefg_constraints_apply(x, sim->t + 0.5 * dt);   /* held velocities */
 #pragma omp parallel for if (x->gather) num_threads(sim->threads) schedule(static)
     for (int k = 0; k < n2; k++) {                  /* u(t + dt) */
@@ -145,11 +171,7 @@ int xefg_step(Sim *sim)
     }
     xefg_update_and_force(x, sim, du, a);           /* sigma, f_int */
     xefg_accelerations_from(x, sim, sim->t + dt);   /* a(t + dt) */
-    if (kappa != 0.0)
-        x->w_damped += damping_work(x, v, a, dt, kappa);
-#pragma omp parallel for if (x->gather) num_threads(sim->threads) schedule(static)
-    for (int k = 0; k < n2; k++)                    /* v(t + dt) */
-        v[k] += 0.5 * dt * (a[k] - kappa * v[k]);
+    x->w_damped += kick(x, sim, dt, kappa);         /* v(t + dt) */
     xefg_constraints_apply(x, sim->t + dt);
     if (check_finite(x, sim))
         return -1;
