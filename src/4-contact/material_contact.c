@@ -32,6 +32,7 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     M->side_mask = side ? ((1u << side->bits) - 1u) << side->shift : 0u;
     M->cell_groups = calloc((size_t)nn, sizeof(unsigned));
     M->mixed = calloc((size_t)nn, 1);
+    M->mixed_cell = calloc((size_t)nn, 1);
     M->near = calloc((size_t)nn, 1);
     M->keyed = calloc((size_t)sim->pts.n + 1, 1);
     M->keyed_list = calloc((size_t)sim->pts.n + 1, sizeof(int));
@@ -42,6 +43,7 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     M->cy = calloc((size_t)nn * CONTACT_AXES, sizeof(double));
     M->geometry_step = -1;
     if (M->shift < 0 || fields_enable(sim) || !M->cell_groups || !M->mixed ||
+        !M->mixed_cell ||
         !M->near || !M->keyed || !M->keyed_list || !M->keyed_end || !M->node_work || !M->area || !M->cx || !M->cy ||
         contact_decision_alloc(&M->decision, nn) ||
         (M->normal == NORMAL_REGRESSION &&
@@ -118,27 +120,36 @@ int material_key_fields(Sim *sim, void *state, Seam seam)
         for (int p = 0; p < P->n; p++)
             group_point(sim, M, p, NULL);
 #pragma omp parallel for num_threads(sim->threads) schedule(static)
-    for (int j = 0; j < g->nny; j++)            /* a node: its four cells */
-        for (int i = 0; i < nx; i++) {
-            int n = j * nx + i;
-            unsigned seen = M->cell_groups[n];
-            if (i > 0)
-                seen |= M->cell_groups[n - 1];
-            if (j > 0)
-                seen |= M->cell_groups[n - nx] | (i > 0 ? M->cell_groups[n - nx - 1] : 0u);
-            M->mixed[n] = (seen & (seen - 1)) != 0;  /* more than one group */
+    for (int j = 0; j < g->nny; j++) {          /* a node: its four cells */
+        const unsigned *row = &M->cell_groups[j * nx];
+        const unsigned *below = j > 0 ? row - nx : row;  /* row 0: itself */
+        unsigned char *mixed = &M->mixed[j * nx];
+        unsigned seen = row[0] | below[0];
+        mixed[0] = (seen & (seen - 1)) != 0;    /* more than one group */
+#pragma omp simd
+        for (int i = 1; i < nx; i++) {          /* integers: any lanes */
+            unsigned s = row[i] | row[i - 1] | below[i] | below[i - 1];
+            mixed[i] = (s & (s - 1)) != 0;
         }
+    }
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
+    for (int j = 0; j < g->nny - 1; j++) {      /* a cell: its four corners */
+        const unsigned char *lo = &M->mixed[j * nx], *up = lo + nx;
+        unsigned char *cell = &M->mixed_cell[j * nx];
+#pragma omp simd
+        for (int i = 0; i < nx - 1; i++)
+            cell[i] = lo[i] | lo[i + 1] | up[i] | up[i + 1];
+    }
     int np = P->n, shares = 1;
 #pragma omp parallel num_threads(sim->threads)
     {                                           /* which corners to key */
         int t = omp_get_thread_num(), nt = omp_get_num_threads();
         int k = (int)((long)np * t / nt), end = (int)((long)np * (t + 1) / nt);
         for (int p = k; p < end; p++) {
-            int node[STENCIL_NODES], c = P->cell[p];
+            int node[STENCIL_NODES];
             unsigned bits = 0;
-            if (M->group_of_body[P->body[p]] == 0 ||
-                !(M->mixed[c] | M->mixed[c + 1] | M->mixed[c + nx] | M->mixed[c + nx + 1]))
-                continue;                       /* field 0, or one group */
+            if (!M->mixed_cell[P->cell[p]] || M->group_of_body[P->body[p]] == 0)
+                continue;                       /* one group, or field 0 */
             stencil_nodes(sim, p, node);
             for (int a = 0; a < STENCIL_NODES; a++)
                 bits |= (unsigned)M->mixed[node[a]] << a;
@@ -211,23 +222,25 @@ static double point_size(const Sim *sim, int p, double half[2])
 /** The nodes, stencil, half sizes and area of point @p p, a point near a
  *  node with several fields (out of line: most points are not near). */
 static __attribute__((noinline)) void
-point_near_stencil(const Sim *sim, int p, int node[STENCIL_NODES], Stencil *st,
-                   double half[2], double *area)
+point_near_stencil(const Sim *sim, int p, int node[STENCIL_NODES], Stencil *buf,
+                   StencilRow *st, double half[2], double *area)
 {
     *area = point_size(sim, p, half);
     stencil_nodes(sim, p, node);
-    stencil_of_point(sim, p, st);
+    *st = contact_stencil_linear(sim, p, buf);
 }
 
 /** Is point @p p in a cell beside a node with several fields? If so, its
- *  nodes, stencil, half sizes and area. */
+ *  nodes, stencil (in @p st; @p buf holds it when none is stored), half
+ *  sizes and area. */
 static inline __attribute__((always_inline)) int
 point_near(const Sim *sim, const MaterialContact *M, int p,
-           int node[STENCIL_NODES], Stencil *st, double half[2], double *area)
+           int node[STENCIL_NODES], Stencil *buf, StencilRow *st,
+           double half[2], double *area)
 {
     if (!M->near[sim->pts.cell[p]])
         return 0;
-    point_near_stencil(sim, p, node, st, half, area);
+    point_near_stencil(sim, p, node, buf, st, half, area);
     return 1;
 }
 
@@ -235,10 +248,10 @@ point_near(const Sim *sim, const MaterialContact *M, int p,
  *  point reaches beyond its cell's corners (MaterialContact::near), so
  *  its own nodes tell. @return its stencil's nodes, or 0 when not near. */
 static int point_near_wide(const Sim *sim, StencilFn wide, int p,
-                           int node[STENCIL_MAX], Stencil *st, double half[2],
-                           double *area)
+                           int node[STENCIL_MAX], Stencil *buf, StencilRow *st,
+                           double half[2], double *area)
 {
-    int n = contact_stencil(sim, wide, p, node, st);
+    int n = contact_stencil(sim, wide, p, node, buf, st);
     if (n)
         *area = point_size(sim, p, half);
     return n;
@@ -248,11 +261,12 @@ static int point_near_wide(const Sim *sim, StencilFn wide, int p,
  *  @return the nodes of the point's stencil, or 0 when it is not near. */
 static inline __attribute__((always_inline)) int
 point_nodes(const Sim *sim, const MaterialContact *M, StencilFn wide, int p,
-            int node[STENCIL_MAX], Stencil *st, double half[2], double *area)
+            int node[STENCIL_MAX], Stencil *buf, StencilRow *st, double half[2],
+            double *area)
 {
     if (wide)                                   /* another row of run.shape */
-        return point_near_wide(sim, wide, p, node, st, half, area);
-    return point_near(sim, M, p, node, st, half, area) ? STENCIL_NODES : 0;
+        return point_near_wide(sim, wide, p, node, buf, st, half, area);
+    return point_near(sim, M, p, node, buf, st, half, area) ? STENCIL_NODES : 0;
 }
 
 /// [mass_gradients]
@@ -263,9 +277,10 @@ gradient_at(Sim *sim, MaterialContact *M, int p, const Owned *own, StencilFn wid
 {
     const FieldTable *F = &sim->fields;
     int node[STENCIL_MAX];
-    Stencil st;
+    Stencil buf;
+    StencilRow st;
     double half[2], area;
-    int n = point_nodes(sim, M, wide, p, node, &st, half, &area);
+    int n = point_nodes(sim, M, wide, p, node, &buf, &st, half, &area);
     if (!n)
         return;
     double mp = sim->pts.m[p];
@@ -361,9 +376,10 @@ fit_point(Sim *sim, void *state, int p, const Owned *own)
     const FieldTable *F = &sim->fields;
     const Grid *g = &sim->grid;
     int node[STENCIL_NODES];
-    Stencil st;
+    Stencil buf;
+    StencilRow st;
     double half[2], area, h = sqrt(g->dx * g->dy);
-    if (!point_near(sim, M, p, node, &st, half, &area))
+    if (!point_near(sim, M, p, node, &buf, &st, half, &area))
         return;
     for (int a = 0; a < STENCIL_NODES; a++) {
         int n = node[a], s = st.slot[a];
@@ -424,9 +440,10 @@ reach_at(Sim *sim, MaterialContact *M, int p, const Owned *own, StencilFn wide)
     const FieldTable *F = &sim->fields;
     const Particles *P = &sim->pts;
     int node[STENCIL_MAX];
-    Stencil st;
+    Stencil buf;
+    StencilRow st;
     double half[2], area;
-    int nodes = point_nodes(sim, M, wide, p, node, &st, half, &area);
+    int nodes = point_nodes(sim, M, wide, p, node, &buf, &st, half, &area);
     for (int a = 0; a < nodes; a++) {
         int n = node[a], s = st.slot[a];
         if (F->first[n] < 0 || st.S[a] <= 0.0 || !owns(&sim->grid, own, n))

@@ -55,6 +55,8 @@ typedef struct MaterialContact {
     unsigned *cell_groups; /**< per cell (by its lower-left node): bit g
                                set when a point of group g is in it */
     unsigned char *mixed; /**< per node: points of several groups reach it */
+    unsigned char *mixed_cell; /**< per cell (by its lower-left node): a
+                               corner is mixed (linear stencils) */
     unsigned char *near;  /**< per cell: a corner has several fields */
     unsigned char *keyed; /**< per point: bit a set when Task 1 keys its
                                corner a with its group (found on threads,

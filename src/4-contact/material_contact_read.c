@@ -239,6 +239,7 @@ void material_contact_release(void *state)
     free(M->law);
     free(M->cell_groups);
     free(M->mixed);
+    free(M->mixed_cell);
     free(M->near);
     free(M->keyed);
     free(M->keyed_list);
