@@ -19,6 +19,17 @@
 #include "output.h"
 #include "step.h"
 #include "strip_scatter.h"
+#include "strips.h"
+
+/** The scatters of Task 2 over the points near the nodes with several
+ *  fields (near_scatter()). */
+typedef enum NearPass {
+    PASS_GRADIENT,        /**< mass_gradients() */
+    PASS_FIT,             /**< a pass of regression_fit() */
+    PASS_REACH            /**< interface_reach() */
+} NearPass;
+
+static void near_scatter(Sim *sim, MaterialContact *M, NearPass pass);
 
 int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
 {
@@ -37,6 +48,8 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     M->keyed = calloc((size_t)sim->pts.n + 1, 1);
     M->keyed_list = calloc((size_t)sim->pts.n + 1, sizeof(int));
     M->keyed_end = calloc((size_t)sim->threads, sizeof(int));
+    M->near_list = calloc(2 * (size_t)sim->pts.n + 1, sizeof(int));
+    M->near_end = calloc((size_t)sim->threads + 1, sizeof(int));
     M->node_work = calloc((size_t)nn, sizeof(double));
     M->area = calloc((size_t)nn, sizeof(double));
     M->cx = calloc((size_t)nn * CONTACT_AXES, sizeof(double));
@@ -44,7 +57,7 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     M->geometry_step = -1;
     if (M->shift < 0 || fields_enable(sim) || !M->cell_groups || !M->mixed ||
         !M->mixed_cell ||
-        !M->near || !M->keyed || !M->keyed_list || !M->keyed_end || !M->node_work || !M->area || !M->cx || !M->cy ||
+        !M->near || !M->keyed || !M->keyed_list || !M->keyed_end || !M->near_list || !M->near_end || !M->node_work || !M->area || !M->cx || !M->cy ||
         contact_decision_alloc(&M->decision, nn) ||
         (M->normal == NORMAL_REGRESSION &&
          (!(M->fit = calloc((size_t)nn * REGRESSION_DOUBLES, sizeof(double))) ||
@@ -92,16 +105,28 @@ static __attribute__((noinline)) int key_fields_wide(Sim *sim, MaterialContact *
 /// [material_key_fields_wide]
 
 /// [material_key_fields]
-/** Point @p p's group to its cell (by lower-left node), when @p own (NULL:
- *  all) has that node: an OR, the same in any order (strip_scatter.h). */
-static inline __attribute__((always_inline)) void
-group_point(Sim *sim, void *state, int p, const Owned *own)
+/** The groups in each cell (by its lower-left node), M->cell_groups:
+ *  on threads over the strips' points (strips.h), each strip's thread
+ *  writing the cells of its own nodes only; an OR, the same in any order. */
+static void cell_groups(Sim *sim, MaterialContact *M)
 {
-    MaterialContact *M = state;
     const Particles *P = &sim->pts;
-    int c = P->cell[p];
-    if (owns(&sim->grid, own, c))
-        M->cell_groups[c] |= 1u << M->group_of_body[P->body[p]];
+    const Strips *S = &sim->strips;
+    memset(M->cell_groups, 0, sizeof(unsigned) * (size_t)sim->grid.nnodes);
+    if (S->n == 0) {
+        for (int p = 0; p < P->n; p++)
+            M->cell_groups[P->cell[p]] |= 1u << M->group_of_body[P->body[p]];
+        return;
+    }
+#pragma omp parallel for num_threads(sim->threads) schedule(static, 1)
+    for (int t = 0; t < S->n; t++) {
+        int lo = S->first_node[t], hi = S->first_node[t + 1];
+        for (int k = S->start[t]; k < S->start[t + 1]; k++) {
+            int p = S->list[k], c = P->cell[p];
+            if (c >= lo && c < hi)
+                M->cell_groups[c] |= 1u << M->group_of_body[P->body[p]];
+        }
+    }
 }
 
 int material_key_fields(Sim *sim, void *state, Seam seam)
@@ -113,12 +138,7 @@ int material_key_fields(Sim *sim, void *state, Seam seam)
     (void)seam;
     if (sim->scene.run.stencil)                 /* another row of run.shape */
         return key_fields_wide(sim, M);
-    memset(M->cell_groups, 0, sizeof(unsigned) * (size_t)g->nnodes);
-    if (sim->strips.n > 0)                      /* the groups in each cell */
-        strip_scatter(sim, group_point, M);
-    else
-        for (int p = 0; p < P->n; p++)
-            group_point(sim, M, p, NULL);
+    cell_groups(sim, M);                        /* the groups in each cell */
 #pragma omp parallel for num_threads(sim->threads) schedule(static)
     for (int j = 0; j < g->nny; j++) {          /* a node: its four cells */
         const unsigned *row = &M->cell_groups[j * nx];
@@ -321,11 +341,8 @@ static void mass_gradients(Sim *sim, MaterialContact *M)
 {
     if (sim->scene.run.stencil)                 /* another row of run.shape */
         gradients_wide(sim, M);
-    else if (sim->strips.n > 0)
-        strip_scatter(sim, gradient_point, M);
     else
-        for (int p = 0, np = sim->pts.n; p < np; p++)
-            gradient_point(sim, M, p, NULL);
+        near_scatter(sim, M, PASS_GRADIENT);
 }
 /// [mass_gradients]
 
@@ -407,11 +424,7 @@ static void regression_fit(Sim *sim, MaterialContact *M)
 #pragma omp parallel for num_threads(sim->threads) schedule(static)
         for (int k = 0; k < F->ntouched; k++)
             regression_clear(&M->fit[REGRESSION_DOUBLES * F->touched[k]]);
-        if (sim->strips.n > 0)
-            strip_scatter(sim, fit_point, M);
-        else
-            for (int p = 0, np = sim->pts.n; p < np; p++)
-                fit_point(sim, M, p, NULL);
+        near_scatter(sim, M, PASS_FIT);
 #pragma omp parallel for num_threads(sim->threads) schedule(static)
         for (int k = 0; k < F->ntouched; k++)
             regression_newton(&M->fit[REGRESSION_DOUBLES * F->touched[k]]);
@@ -487,13 +500,78 @@ static void interface_reach(Sim *sim, MaterialContact *M)
 {
     if (sim->scene.run.stencil)                 /* another row of run.shape */
         reaches_wide(sim, M);
-    else if (sim->strips.n > 0)
-        strip_scatter(sim, reach_point, M);
     else
-        for (int p = 0, np = sim->pts.n; p < np; p++)
-            reach_point(sim, M, p, NULL);
+        near_scatter(sim, M, PASS_REACH);
 }
 /// [interface_reach]
+
+/// [near_points]
+/** Task 2, before its scatters (linear stencils): the points in a cell
+ *  beside a node with several fields (MaterialContact::near), in
+ *  increasing index; on one thread from near_list[0] to near_end[0], on
+ *  threads each strip's from its first place in Strips::list on, a point
+ *  at the strip's edge as ~p. One pass over the points serves the two or
+ *  three scatters that follow. */
+static void near_points(Sim *sim, MaterialContact *M)
+{
+    const Strips *S = &sim->strips;
+    const int *cell = sim->pts.cell;
+    if (S->n == 0) {
+        int m = 0;
+        for (int p = 0, np = sim->pts.n; p < np; p++)
+            if (M->near[cell[p]])
+                M->near_list[m++] = p;
+        M->near_end[0] = m;
+        return;
+    }
+#pragma omp parallel for num_threads(sim->threads) schedule(static, 1)
+    for (int t = 0; t < S->n; t++) {            /* strip_scatter()'s points */
+        int m = S->start[t];
+        for (int k = S->start[t]; k < S->start[t + 1]; k++) {
+            int p = S->list[k];
+            if (M->near[cell[p]])
+                M->near_list[m++] = S->row_strips[S->code[p]] & 1 ? ~p : p;
+        }
+        M->near_end[t] = m;
+    }
+}
+
+/** A near point's share of @p pass, to the nodes of @p own (NULL: all). */
+static inline __attribute__((always_inline)) void
+near_point(Sim *sim, MaterialContact *M, NearPass pass, int p, const Owned *own)
+{
+    if (pass == PASS_GRADIENT)
+        gradient_point(sim, M, p, own);
+    else if (pass == PASS_FIT)
+        fit_point(sim, M, p, own);
+    else
+        reach_point(sim, M, p, own);
+}
+
+/** @p pass over the points of near_points(), as strip_scatter() would
+ *  hand them (the others add nothing): each node sums in point order on
+ *  any number of threads. */
+static void near_scatter(Sim *sim, MaterialContact *M, NearPass pass)
+{
+    const Strips *S = &sim->strips;
+    if (S->n == 0) {
+        for (int k = 0; k < M->near_end[0]; k++)
+            near_point(sim, M, pass, M->near_list[k], NULL);
+        return;
+    }
+#pragma omp parallel for num_threads(sim->threads) schedule(static, 1)
+    for (int t = 0; t < S->n; t++) {
+        Owned own = {S->first_node[t], S->first_node[t + 1]};
+        for (int k = S->start[t]; k < M->near_end[t]; k++) {
+            int e = M->near_list[k];
+            if (e < 0)                          /* at the strip's edge */
+                near_point(sim, M, pass, ~e, &own);
+            else
+                near_point(sim, M, pass, e, NULL);
+        }
+    }
+}
+/// [near_points]
 
 /** Task 2: the per-slot sums, the candidate directions and the reaches of
  *  this step. */
@@ -513,7 +591,11 @@ static int interface_geometry(Sim *sim, MaterialContact *M)
                 M->hi[CONTACT_AXES * s + c] = -HUGE_VAL;
             }
         }
+    if (F->ntouched == 0)
+        return 0;                               /* no node, no point near */
     mark_cells_around(M->near, F, g->nnx, 1);   /* and the cells around them */
+    if (!sim->scene.run.stencil)               /* the linear scatters' */
+        near_points(sim, M);
     mass_gradients(sim, M);
 #pragma omp parallel for num_threads(sim->threads) schedule(static)
     for (int k = 0; k < F->ntouched; k++) {     /* eq. 8-10: the node's area */

@@ -244,6 +244,8 @@ void material_contact_release(void *state)
     free(M->keyed);
     free(M->keyed_list);
     free(M->keyed_end);
+    free(M->near_list);
+    free(M->near_end);
     free(M->node_work);
     free(M->gx);
     free(M->gy);
