@@ -15,37 +15,53 @@
 #include "stencil.h"
 #include "strip_scatter.h"
 
+/** @brief Point @p p's bilinear stencil of this step: the one stored at
+ *         Task 0 (stencils.h), or, with none stored, computed into
+ *         @p buf. */
+static inline StencilRow contact_stencil_linear(const Sim *sim, int p,
+                                                Stencil *buf)
+{
+    if (sim->stencils.linear)
+        return stencil_stored(sim, p);
+    stencil_linear(sim, p, buf);
+    buf->n = STENCIL_NODES;
+    return stencil_row(buf);
+}
+
 /// [contact_stencil]
 /** @brief Point @p p's stencil for contact, when one of its nodes carries
  *         extra fields this step (FieldTable::first): its nodes in
- *         @p node and its S_ip, G_ip and field slots in @p st, through
- *         @p wide (run.shape's stencil function) or, NULL, the cell's four
- *         nodes. @return the nodes in use, or 0 when none of them has
- *         extra fields (@p st is then not filled) */
+ *         @p node and its S_ip, G_ip and field slots in @p row, through
+ *         @p wide (run.shape's stencil function, computed into @p buf) or,
+ *         NULL, the cell's four nodes (the stencil stored at Task 0 with
+ *         Task 1's fields, stencils.h: the same numbers). @return the
+ *         nodes in use, or 0 when none of them has extra fields (@p row
+ *         is then not set) */
 static inline __attribute__((always_inline)) int
 contact_stencil(const Sim *sim, StencilFn wide, int p, int node[STENCIL_MAX],
-                Stencil *st)
+                Stencil *buf, StencilRow *row)
 {
     const FieldTable *F = &sim->fields;
     int near = 0;
     if (wide) {                            /* another row of run.shape */
-        wide(sim, p, st);
-        for (int a = 0; a < st->n; a++) {
-            node[a] = st->slot[a];         /* field 0: the nodes */
+        wide(sim, p, buf);
+        for (int a = 0; a < buf->n; a++) {
+            node[a] = buf->slot[a];        /* field 0: the nodes */
             near |= F->first[node[a]] >= 0;
         }
         if (!near)
             return 0;
-        stencil_fields(sim, p, st);
-        return st->n;
+        stencil_fields(sim, p, buf);
+        *row = stencil_row(buf);
+        return buf->n;
     }
     stencil_nodes(sim, p, node);
     for (int a = 0; a < STENCIL_NODES; a++)
         near |= F->first[node[a]] >= 0;
     if (!near)
         return 0;
-    stencil_linear(sim, p, st);
-    return st->n = STENCIL_NODES;
+    *row = contact_stencil_linear(sim, p, buf);
+    return STENCIL_NODES;
 }
 /// [contact_stencil]
 

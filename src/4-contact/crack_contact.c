@@ -103,8 +103,9 @@ volume_at(Sim *sim, ContactState *S, int p, const Owned *own, StencilFn wide)
     const FieldTable *F = &sim->fields;
     const Particles *P = &sim->pts;
     int node[STENCIL_MAX];
-    Stencil st;
-    int n = contact_stencil(sim, wide, p, node, &st);
+    Stencil buf;
+    StencilRow st;
+    int n = contact_stencil(sim, wide, p, node, &buf, &st);
     if (!n)
         return;
     double v = (1.0 + P->exx[p]) * (1.0 + P->eyy[p]) * P->vol[p];

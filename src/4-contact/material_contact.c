@@ -19,6 +19,17 @@
 #include "output.h"
 #include "step.h"
 #include "strip_scatter.h"
+#include "strips.h"
+
+/** The scatters of Task 2 over the points near the nodes with several
+ *  fields (near_scatter()). */
+typedef enum NearPass {
+    PASS_GRADIENT,        /**< mass_gradients() */
+    PASS_FIT,             /**< a pass of regression_fit() */
+    PASS_REACH            /**< interface_reach() */
+} NearPass;
+
+static void near_scatter(Sim *sim, MaterialContact *M, NearPass pass);
 
 int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
 {
@@ -32,17 +43,21 @@ int material_contact_prepare(Sim *sim, void *state, char *err, size_t errlen)
     M->side_mask = side ? ((1u << side->bits) - 1u) << side->shift : 0u;
     M->cell_groups = calloc((size_t)nn, sizeof(unsigned));
     M->mixed = calloc((size_t)nn, 1);
+    M->mixed_cell = calloc((size_t)nn, 1);
     M->near = calloc((size_t)nn, 1);
     M->keyed = calloc((size_t)sim->pts.n + 1, 1);
     M->keyed_list = calloc((size_t)sim->pts.n + 1, sizeof(int));
     M->keyed_end = calloc((size_t)sim->threads, sizeof(int));
+    M->near_list = calloc(2 * (size_t)sim->pts.n + 1, sizeof(int));
+    M->near_end = calloc((size_t)sim->threads + 1, sizeof(int));
     M->node_work = calloc((size_t)nn, sizeof(double));
     M->area = calloc((size_t)nn, sizeof(double));
     M->cx = calloc((size_t)nn * CONTACT_AXES, sizeof(double));
     M->cy = calloc((size_t)nn * CONTACT_AXES, sizeof(double));
     M->geometry_step = -1;
     if (M->shift < 0 || fields_enable(sim) || !M->cell_groups || !M->mixed ||
-        !M->near || !M->keyed || !M->keyed_list || !M->keyed_end || !M->node_work || !M->area || !M->cx || !M->cy ||
+        !M->mixed_cell ||
+        !M->near || !M->keyed || !M->keyed_list || !M->keyed_end || !M->near_list || !M->near_end || !M->node_work || !M->area || !M->cx || !M->cy ||
         contact_decision_alloc(&M->decision, nn) ||
         (M->normal == NORMAL_REGRESSION &&
          (!(M->fit = calloc((size_t)nn * REGRESSION_DOUBLES, sizeof(double))) ||
@@ -90,16 +105,28 @@ static __attribute__((noinline)) int key_fields_wide(Sim *sim, MaterialContact *
 /// [material_key_fields_wide]
 
 /// [material_key_fields]
-/** Point @p p's group to its cell (by lower-left node), when @p own (NULL:
- *  all) has that node: an OR, the same in any order (strip_scatter.h). */
-static inline __attribute__((always_inline)) void
-group_point(Sim *sim, void *state, int p, const Owned *own)
+/** The groups in each cell (by its lower-left node), M->cell_groups:
+ *  on threads over the strips' points (strips.h), each strip's thread
+ *  writing the cells of its own nodes only; an OR, the same in any order. */
+static void cell_groups(Sim *sim, MaterialContact *M)
 {
-    MaterialContact *M = state;
     const Particles *P = &sim->pts;
-    int c = P->cell[p];
-    if (owns(&sim->grid, own, c))
-        M->cell_groups[c] |= 1u << M->group_of_body[P->body[p]];
+    const Strips *S = &sim->strips;
+    memset(M->cell_groups, 0, sizeof(unsigned) * (size_t)sim->grid.nnodes);
+    if (S->n == 0) {
+        for (int p = 0; p < P->n; p++)
+            M->cell_groups[P->cell[p]] |= 1u << M->group_of_body[P->body[p]];
+        return;
+    }
+#pragma omp parallel for num_threads(sim->threads) schedule(static, 1)
+    for (int t = 0; t < S->n; t++) {
+        int lo = S->first_node[t], hi = S->first_node[t + 1];
+        for (int k = S->start[t]; k < S->start[t + 1]; k++) {
+            int p = S->list[k], c = P->cell[p];
+            if (c >= lo && c < hi)
+                M->cell_groups[c] |= 1u << M->group_of_body[P->body[p]];
+        }
+    }
 }
 
 int material_key_fields(Sim *sim, void *state, Seam seam)
@@ -111,34 +138,38 @@ int material_key_fields(Sim *sim, void *state, Seam seam)
     (void)seam;
     if (sim->scene.run.stencil)                 /* another row of run.shape */
         return key_fields_wide(sim, M);
-    memset(M->cell_groups, 0, sizeof(unsigned) * (size_t)g->nnodes);
-    if (sim->strips.n > 0)                      /* the groups in each cell */
-        strip_scatter(sim, group_point, M);
-    else
-        for (int p = 0; p < P->n; p++)
-            group_point(sim, M, p, NULL);
+    cell_groups(sim, M);                        /* the groups in each cell */
 #pragma omp parallel for num_threads(sim->threads) schedule(static)
-    for (int j = 0; j < g->nny; j++)            /* a node: its four cells */
-        for (int i = 0; i < nx; i++) {
-            int n = j * nx + i;
-            unsigned seen = M->cell_groups[n];
-            if (i > 0)
-                seen |= M->cell_groups[n - 1];
-            if (j > 0)
-                seen |= M->cell_groups[n - nx] | (i > 0 ? M->cell_groups[n - nx - 1] : 0u);
-            M->mixed[n] = (seen & (seen - 1)) != 0;  /* more than one group */
+    for (int j = 0; j < g->nny; j++) {          /* a node: its four cells */
+        const unsigned *row = &M->cell_groups[j * nx];
+        const unsigned *below = j > 0 ? row - nx : row;  /* row 0: itself */
+        unsigned char *mixed = &M->mixed[j * nx];
+        unsigned seen = row[0] | below[0];
+        mixed[0] = (seen & (seen - 1)) != 0;    /* more than one group */
+#pragma omp simd
+        for (int i = 1; i < nx; i++) {          /* integers: any lanes */
+            unsigned s = row[i] | row[i - 1] | below[i] | below[i - 1];
+            mixed[i] = (s & (s - 1)) != 0;
         }
+    }
+#pragma omp parallel for num_threads(sim->threads) schedule(static)
+    for (int j = 0; j < g->nny - 1; j++) {      /* a cell: its four corners */
+        const unsigned char *lo = &M->mixed[j * nx], *up = lo + nx;
+        unsigned char *cell = &M->mixed_cell[j * nx];
+#pragma omp simd
+        for (int i = 0; i < nx - 1; i++)
+            cell[i] = lo[i] | lo[i + 1] | up[i] | up[i + 1];
+    }
     int np = P->n, shares = 1;
 #pragma omp parallel num_threads(sim->threads)
     {                                           /* which corners to key */
         int t = omp_get_thread_num(), nt = omp_get_num_threads();
         int k = (int)((long)np * t / nt), end = (int)((long)np * (t + 1) / nt);
         for (int p = k; p < end; p++) {
-            int node[STENCIL_NODES], c = P->cell[p];
+            int node[STENCIL_NODES];
             unsigned bits = 0;
-            if (M->group_of_body[P->body[p]] == 0 ||
-                !(M->mixed[c] | M->mixed[c + 1] | M->mixed[c + nx] | M->mixed[c + nx + 1]))
-                continue;                       /* field 0, or one group */
+            if (!M->mixed_cell[P->cell[p]] || M->group_of_body[P->body[p]] == 0)
+                continue;                       /* one group, or field 0 */
             stencil_nodes(sim, p, node);
             for (int a = 0; a < STENCIL_NODES; a++)
                 bits |= (unsigned)M->mixed[node[a]] << a;
@@ -211,23 +242,25 @@ static double point_size(const Sim *sim, int p, double half[2])
 /** The nodes, stencil, half sizes and area of point @p p, a point near a
  *  node with several fields (out of line: most points are not near). */
 static __attribute__((noinline)) void
-point_near_stencil(const Sim *sim, int p, int node[STENCIL_NODES], Stencil *st,
-                   double half[2], double *area)
+point_near_stencil(const Sim *sim, int p, int node[STENCIL_NODES], Stencil *buf,
+                   StencilRow *st, double half[2], double *area)
 {
     *area = point_size(sim, p, half);
     stencil_nodes(sim, p, node);
-    stencil_of_point(sim, p, st);
+    *st = contact_stencil_linear(sim, p, buf);
 }
 
 /** Is point @p p in a cell beside a node with several fields? If so, its
- *  nodes, stencil, half sizes and area. */
+ *  nodes, stencil (in @p st; @p buf holds it when none is stored), half
+ *  sizes and area. */
 static inline __attribute__((always_inline)) int
 point_near(const Sim *sim, const MaterialContact *M, int p,
-           int node[STENCIL_NODES], Stencil *st, double half[2], double *area)
+           int node[STENCIL_NODES], Stencil *buf, StencilRow *st,
+           double half[2], double *area)
 {
     if (!M->near[sim->pts.cell[p]])
         return 0;
-    point_near_stencil(sim, p, node, st, half, area);
+    point_near_stencil(sim, p, node, buf, st, half, area);
     return 1;
 }
 
@@ -235,10 +268,10 @@ point_near(const Sim *sim, const MaterialContact *M, int p,
  *  point reaches beyond its cell's corners (MaterialContact::near), so
  *  its own nodes tell. @return its stencil's nodes, or 0 when not near. */
 static int point_near_wide(const Sim *sim, StencilFn wide, int p,
-                           int node[STENCIL_MAX], Stencil *st, double half[2],
-                           double *area)
+                           int node[STENCIL_MAX], Stencil *buf, StencilRow *st,
+                           double half[2], double *area)
 {
-    int n = contact_stencil(sim, wide, p, node, st);
+    int n = contact_stencil(sim, wide, p, node, buf, st);
     if (n)
         *area = point_size(sim, p, half);
     return n;
@@ -248,11 +281,12 @@ static int point_near_wide(const Sim *sim, StencilFn wide, int p,
  *  @return the nodes of the point's stencil, or 0 when it is not near. */
 static inline __attribute__((always_inline)) int
 point_nodes(const Sim *sim, const MaterialContact *M, StencilFn wide, int p,
-            int node[STENCIL_MAX], Stencil *st, double half[2], double *area)
+            int node[STENCIL_MAX], Stencil *buf, StencilRow *st, double half[2],
+            double *area)
 {
     if (wide)                                   /* another row of run.shape */
-        return point_near_wide(sim, wide, p, node, st, half, area);
-    return point_near(sim, M, p, node, st, half, area) ? STENCIL_NODES : 0;
+        return point_near_wide(sim, wide, p, node, buf, st, half, area);
+    return point_near(sim, M, p, node, buf, st, half, area) ? STENCIL_NODES : 0;
 }
 
 /// [mass_gradients]
@@ -263,9 +297,10 @@ gradient_at(Sim *sim, MaterialContact *M, int p, const Owned *own, StencilFn wid
 {
     const FieldTable *F = &sim->fields;
     int node[STENCIL_MAX];
-    Stencil st;
+    Stencil buf;
+    StencilRow st;
     double half[2], area;
-    int n = point_nodes(sim, M, wide, p, node, &st, half, &area);
+    int n = point_nodes(sim, M, wide, p, node, &buf, &st, half, &area);
     if (!n)
         return;
     double mp = sim->pts.m[p];
@@ -306,11 +341,8 @@ static void mass_gradients(Sim *sim, MaterialContact *M)
 {
     if (sim->scene.run.stencil)                 /* another row of run.shape */
         gradients_wide(sim, M);
-    else if (sim->strips.n > 0)
-        strip_scatter(sim, gradient_point, M);
     else
-        for (int p = 0, np = sim->pts.n; p < np; p++)
-            gradient_point(sim, M, p, NULL);
+        near_scatter(sim, M, PASS_GRADIENT);
 }
 /// [mass_gradients]
 
@@ -361,9 +393,10 @@ fit_point(Sim *sim, void *state, int p, const Owned *own)
     const FieldTable *F = &sim->fields;
     const Grid *g = &sim->grid;
     int node[STENCIL_NODES];
-    Stencil st;
+    Stencil buf;
+    StencilRow st;
     double half[2], area, h = sqrt(g->dx * g->dy);
-    if (!point_near(sim, M, p, node, &st, half, &area))
+    if (!point_near(sim, M, p, node, &buf, &st, half, &area))
         return;
     for (int a = 0; a < STENCIL_NODES; a++) {
         int n = node[a], s = st.slot[a];
@@ -391,11 +424,7 @@ static void regression_fit(Sim *sim, MaterialContact *M)
 #pragma omp parallel for num_threads(sim->threads) schedule(static)
         for (int k = 0; k < F->ntouched; k++)
             regression_clear(&M->fit[REGRESSION_DOUBLES * F->touched[k]]);
-        if (sim->strips.n > 0)
-            strip_scatter(sim, fit_point, M);
-        else
-            for (int p = 0, np = sim->pts.n; p < np; p++)
-                fit_point(sim, M, p, NULL);
+        near_scatter(sim, M, PASS_FIT);
 #pragma omp parallel for num_threads(sim->threads) schedule(static)
         for (int k = 0; k < F->ntouched; k++)
             regression_newton(&M->fit[REGRESSION_DOUBLES * F->touched[k]]);
@@ -424,9 +453,10 @@ reach_at(Sim *sim, MaterialContact *M, int p, const Owned *own, StencilFn wide)
     const FieldTable *F = &sim->fields;
     const Particles *P = &sim->pts;
     int node[STENCIL_MAX];
-    Stencil st;
+    Stencil buf;
+    StencilRow st;
     double half[2], area;
-    int nodes = point_nodes(sim, M, wide, p, node, &st, half, &area);
+    int nodes = point_nodes(sim, M, wide, p, node, &buf, &st, half, &area);
     for (int a = 0; a < nodes; a++) {
         int n = node[a], s = st.slot[a];
         if (F->first[n] < 0 || st.S[a] <= 0.0 || !owns(&sim->grid, own, n))
@@ -470,13 +500,78 @@ static void interface_reach(Sim *sim, MaterialContact *M)
 {
     if (sim->scene.run.stencil)                 /* another row of run.shape */
         reaches_wide(sim, M);
-    else if (sim->strips.n > 0)
-        strip_scatter(sim, reach_point, M);
     else
-        for (int p = 0, np = sim->pts.n; p < np; p++)
-            reach_point(sim, M, p, NULL);
+        near_scatter(sim, M, PASS_REACH);
 }
 /// [interface_reach]
+
+/// [near_points]
+/** Task 2, before its scatters (linear stencils): the points in a cell
+ *  beside a node with several fields (MaterialContact::near), in
+ *  increasing index; on one thread from near_list[0] to near_end[0], on
+ *  threads each strip's from its first place in Strips::list on, a point
+ *  at the strip's edge as ~p. One pass over the points serves the two or
+ *  three scatters that follow. */
+static void near_points(Sim *sim, MaterialContact *M)
+{
+    const Strips *S = &sim->strips;
+    const int *cell = sim->pts.cell;
+    if (S->n == 0) {
+        int m = 0;
+        for (int p = 0, np = sim->pts.n; p < np; p++)
+            if (M->near[cell[p]])
+                M->near_list[m++] = p;
+        M->near_end[0] = m;
+        return;
+    }
+#pragma omp parallel for num_threads(sim->threads) schedule(static, 1)
+    for (int t = 0; t < S->n; t++) {            /* strip_scatter()'s points */
+        int m = S->start[t];
+        for (int k = S->start[t]; k < S->start[t + 1]; k++) {
+            int p = S->list[k];
+            if (M->near[cell[p]])
+                M->near_list[m++] = S->row_strips[S->code[p]] & 1 ? ~p : p;
+        }
+        M->near_end[t] = m;
+    }
+}
+
+/** A near point's share of @p pass, to the nodes of @p own (NULL: all). */
+static inline __attribute__((always_inline)) void
+near_point(Sim *sim, MaterialContact *M, NearPass pass, int p, const Owned *own)
+{
+    if (pass == PASS_GRADIENT)
+        gradient_point(sim, M, p, own);
+    else if (pass == PASS_FIT)
+        fit_point(sim, M, p, own);
+    else
+        reach_point(sim, M, p, own);
+}
+
+/** @p pass over the points of near_points(), as strip_scatter() would
+ *  hand them (the others add nothing): each node sums in point order on
+ *  any number of threads. */
+static void near_scatter(Sim *sim, MaterialContact *M, NearPass pass)
+{
+    const Strips *S = &sim->strips;
+    if (S->n == 0) {
+        for (int k = 0; k < M->near_end[0]; k++)
+            near_point(sim, M, pass, M->near_list[k], NULL);
+        return;
+    }
+#pragma omp parallel for num_threads(sim->threads) schedule(static, 1)
+    for (int t = 0; t < S->n; t++) {
+        Owned own = {S->first_node[t], S->first_node[t + 1]};
+        for (int k = S->start[t]; k < M->near_end[t]; k++) {
+            int e = M->near_list[k];
+            if (e < 0)                          /* at the strip's edge */
+                near_point(sim, M, pass, ~e, &own);
+            else
+                near_point(sim, M, pass, e, NULL);
+        }
+    }
+}
+/// [near_points]
 
 /** Task 2: the per-slot sums, the candidate directions and the reaches of
  *  this step. */
@@ -496,7 +591,11 @@ static int interface_geometry(Sim *sim, MaterialContact *M)
                 M->hi[CONTACT_AXES * s + c] = -HUGE_VAL;
             }
         }
+    if (F->ntouched == 0)
+        return 0;                               /* no node, no point near */
     mark_cells_around(M->near, F, g->nnx, 1);   /* and the cells around them */
+    if (!sim->scene.run.stencil)               /* the linear scatters' */
+        near_points(sim, M);
     mass_gradients(sim, M);
 #pragma omp parallel for num_threads(sim->threads) schedule(static)
     for (int k = 0; k < F->ntouched; k++) {     /* eq. 8-10: the node's area */

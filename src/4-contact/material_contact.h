@@ -55,6 +55,8 @@ typedef struct MaterialContact {
     unsigned *cell_groups; /**< per cell (by its lower-left node): bit g
                                set when a point of group g is in it */
     unsigned char *mixed; /**< per node: points of several groups reach it */
+    unsigned char *mixed_cell; /**< per cell (by its lower-left node): a
+                               corner is mixed (linear stencils) */
     unsigned char *near;  /**< per cell: a corner has several fields */
     unsigned char *keyed; /**< per point: bit a set when Task 1 keys its
                                corner a with its group (found on threads,
@@ -64,6 +66,10 @@ typedef struct MaterialContact {
                                its own from the share's first index on */
     int *keyed_end;       /**< per thread (Sim::threads): one past its
                                last entry in keyed_list */
+    int *near_list;       /**< 2 per point: the points near a node with
+                               several fields, strip by strip (Task 2) */
+    int *near_end;        /**< per strip (one on one thread): one past its
+                               last entry in near_list */
     double *node_work;    /**< per touched node (FieldTable::touched
                                order): the work of its pairs at Task 4,
                                added to @c work in node order */

@@ -239,10 +239,13 @@ void material_contact_release(void *state)
     free(M->law);
     free(M->cell_groups);
     free(M->mixed);
+    free(M->mixed_cell);
     free(M->near);
     free(M->keyed);
     free(M->keyed_list);
     free(M->keyed_end);
+    free(M->near_list);
+    free(M->near_end);
     free(M->node_work);
     free(M->gx);
     free(M->gy);

@@ -84,11 +84,20 @@ int energy_balance_step(Sim *sim, void *state, Seam seam)
             wl += fx * (P->x[p] - B->x[p]) + fy * (P->y[p] - B->y[p]);
         }
     }
-    for (int p = 0; p < P->n; p++) {
-        double ux = P->x[p] - B->x[p], uy = P->y[p] - B->y[p];
-        wg += P->m[p] * (run->gx * gs * ux + run->gy * gs * uy);
-        B->x[p] = P->x[p];
-        B->y[p] = P->y[p];
+    if (run->gx != 0.0 || run->gy != 0.0) {
+        for (int p = 0; p < P->n; p++) {
+            double ux = P->x[p] - B->x[p], uy = P->y[p] - B->y[p];
+            wg += P->m[p] * (run->gx * gs * ux + run->gy * gs * uy);
+            B->x[p] = P->x[p];
+            B->y[p] = P->y[p];
+        }
+    } else {        /* no gravity: wg is +0 (a sum of zeros from +0), and */
+        for (int l = 0; l < sc->nloads; l++)        /* only the loaded */
+            for (int k = 0; k < sc->loads[l].count; k++) {  /* points' */
+                int p = sc->loads[l].points[k];     /* places are read */
+                B->x[p] = P->x[p];
+                B->y[p] = P->y[p];
+            }
     }
     B->w_ext += wg + wl;
     return 0;

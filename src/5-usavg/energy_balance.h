@@ -20,7 +20,8 @@ typedef struct EnergyBalance {
     double w_ext;    /**< work of gravity and point loads so far */
     double w_damp;   /**< energy taken out by damping so far (>= 0) */
     double *x;       /**< per point: position x at the start of the step
-                          (only when gravity or loads act) */
+                          (only when gravity or loads act; without
+                          gravity, kept for the loaded points only) */
     double *y;       /**< per point: position y at the start of the step */
 } EnergyBalance;
 /// [energy_balance_state]
