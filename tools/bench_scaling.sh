@@ -49,7 +49,7 @@ cases=(
 )
 
 printf 'scaling: %s cores (%s), threads %s, best of %s rounds; load before: %s\n' \
-    "$(nproc)" "$(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -1)" "$THREAD_LIST" \
+    "$(getconf _NPROCESSORS_ONLN)" "$(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -1)" "$THREAD_LIST" \
     "$REPEAT" "$(cut -d' ' -f1-3 /proc/loadavg)"
 printf '%-11s %8s %4s %4s %9s %10s %7s %5s\n' scene points N thr "loop s" "p-steps/s" speedup eff
 for c in "${cases[@]}"; do

@@ -92,7 +92,9 @@ printf "each repeat's ratio); memory: peak RSS / points (load average before: %s
     "$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)"
 # a machine already busy gives a process of two threads two shares of its
 # cores against one: the speed-up then measures the scheduler, not the code
-cores=$(nproc 2>/dev/null || echo 1)
+# (getconf, not nproc: nproc answers OMP_NUM_THREADS, which tools/bench.sh
+# sets to 1 for its one-thread part)
+cores=$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
 loaded=$(awk -v c="$cores" '{ print ($1 > c - 0.5) ? 1 : 0 }' /proc/loadavg 2>/dev/null || echo 0)
 [ "$loaded" = 1 ] &&
     printf 'the load average is above %s cores less one half: the speed-ups are not judged\n' "$cores"
