@@ -23,6 +23,8 @@
 # stage8 binaries named mpm1 ... mpm8; default build/stageN/mpm), WORK.
 set -u
 cd "$(dirname "$0")/.." || exit 1
+# shellcheck source=tools/bench_lib.sh
+. tools/bench_lib.sh
 THREAD_LIST=${THREAD_LIST:-1 2 4 8 12 16}
 REPEAT=${REPEAT:-2}
 SCENES=${SCENES:-disks_200k disks_2M dcb_crack touching xefg_plate disks_gimp}
@@ -60,14 +62,13 @@ for c in "${cases[@]}"; do
         printf '%-11s %s not built: skipped\n' "$label" "$mpm"
         continue
     fi
+    pts="" time=""
     # shellcheck disable=SC2086
-    read -r pts dt < <("$mpm" "$scene" -q -o "$WORK/probe" run.time=1e-9 $extra 2>&1 |
-        sed -nE 's/.*: ([0-9]+) points.*dt = ([0-9.eE+-]+) ms.*/\1 \2/p')
-    if [ -z "${pts:-}" ]; then
+    read -r pts time < <(scene_steps "$mpm" "$scene" "$n" "$WORK" $extra)
+    if [ -z "$pts" ]; then
         printf '%-11s cannot read %s\n' "$label" "$scene"
         continue
     fi
-    time=$(awk -v n="$n" -v dt="$dt" 'BEGIN { printf "%.17g", (n - 0.5) * dt }')
     declare -A best=()
     for ((r = 0; r < REPEAT; r++)); do
         for th in $THREAD_LIST; do

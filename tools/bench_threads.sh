@@ -33,6 +33,8 @@
 # this), WORK (a folder; default a new one, removed at the end).
 set -u
 cd "$(dirname "$0")/.." || exit 1
+# shellcheck source=tools/bench_lib.sh
+. tools/bench_lib.sh
 REPEAT=${REPEAT:-3}
 THREADS=${THREADS:-2}
 PIN=${PIN:-}
@@ -107,14 +109,13 @@ for c in "${cases[@]}"; do
         printf '%-19s %s not built: skipped\n' "$label" "$mpm"
         continue
     fi
+    pts="" time=""
     # shellcheck disable=SC2086
-    read -r pts dt < <("$mpm" "$scene" -q -o "$WORK/probe" run.time=1e-9 $extra 2>&1 |
-        sed -nE 's/.*: ([0-9]+) points.*dt = ([0-9.eE+-]+) ms.*/\1 \2/p')
-    if [ -z "${pts:-}" ]; then
+    read -r pts time < <(scene_steps "$mpm" "$scene" "$n" "$WORK" $extra)
+    if [ -z "$pts" ]; then
         printf '%-19s cannot read %s\n' "$label" "$scene"
         continue
     fi
-    time=$(awk -v n="$n" -v dt="$dt" 'BEGIN { printf "%.17g", (n - 0.5) * dt }')
     read -r _ base < <(one "$mpm" tests/1-mpm/scenes/disks.cfg "$THREADS" - 1e-9)
     t1=() t2=() tp=() ratios=() m1=0 m2=0 failed=""
     for ((r = 0; r < REPEAT; r++)); do
