@@ -29,11 +29,10 @@
 
 static char out[16384];
 
+/** $MPM_BIN with @p args; the test fails unless it exits 0. */
 static void run_ok(const char *args)
 {
-    int rc = tk_run_mpm(args, out, sizeof out);
-    if (rc != 0)
-        fail_msg("mpm %s: exit %d\n%s", args, rc, out);
+    tk_run_mpm_ok(args, out, sizeof out);
 }
 
 /** A run of 2N steps and one of N steps restarted for N more: the same

@@ -35,11 +35,10 @@
 
 static char out[16384];
 
+/** $MPM_BIN with @p args; the test fails unless it exits 0. */
 static void run_ok(const char *args)
 {
-    int rc = tk_run_mpm(args, out, sizeof out);
-    if (rc != 0)
-        fail_msg("mpm %s: exit %d: %s", args, rc, out);
+    tk_run_mpm_ok(args, out, sizeof out);
 }
 
 /** The report's "mpm: growth:" lines of the last run, into @p lines. */

@@ -174,11 +174,10 @@ static void grows_straight_when_J_reaches_G_c(void **state)
 
 static char out[16384];
 
+/** $MPM_BIN with @p args; the test fails unless it exits 0. */
 static void run_ok(const char *args)
 {
-    int rc = tk_run_mpm(args, out, sizeof out);
-    if (rc != 0)
-        fail_msg("mpm %s: exit %d\n%s", args, rc, out);
+    tk_run_mpm_ok(args, out, sizeof out);
 }
 
 /** The last row's events_crack0_last of history.csv at @p path. */

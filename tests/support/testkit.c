@@ -122,6 +122,13 @@ int tk_run_mpm(const char *args, char *out, size_t outlen)
     return tk_shell(cmd, out, outlen);
 }
 
+void tk_run_mpm_ok(const char *args, char *out, size_t outlen)
+{
+    int rc = tk_run_mpm(args, out, outlen);
+    if (rc != 0)
+        fail_msg("mpm %s: exit %d\n%s", args, rc, out);
+}
+
 int tk_shell(const char *command, char *out, size_t outlen)
 {
     size_t n = strlen(command) + 8;

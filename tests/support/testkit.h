@@ -71,6 +71,10 @@ void tk_free(Sim *sim);
  *         into out, and return the exit status. */
 int tk_run_mpm(const char *args, char *out, size_t outlen);
 
+/** @brief tk_run_mpm() that fails the test, with the command and its
+ *         output, unless the program exits 0. */
+void tk_run_mpm_ok(const char *args, char *out, size_t outlen);
+
 /** @brief The program under test ($MPM_BIN); fails the test when unset. */
 const char *tk_mpm_bin(void);
 
