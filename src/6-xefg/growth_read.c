@@ -121,6 +121,10 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
                            "the half disk ahead of a tip whose stress is "
                            "averaged must be positive (leave it out for "
                            "1.5 node spacings)", radius);
+    if (has_radius && set->tip)
+        return scene_error(r, at(s, "radius"), "radius", "%g: criterion = "
+                           "\"tip\" averages nothing (the radius is the "
+                           "half disk of criterion = \"average\")", radius);
     set->length = length;
     set->radius = radius;
     set->max_segments = (int)most;
