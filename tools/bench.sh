@@ -330,16 +330,19 @@ if [ -x "$S4" ] && command -v valgrind >/dev/null 2>&1; then
         "$(awk -v a="$d1" -v b="$d4t" 'BEGIN { print b / a }')"
 fi
 
-# ---- stage 5: a scene without cracks or contact costs what stage 1 costs ----
+# ---- stages 5-8: a scene without cracks or contact costs what stage 1 costs ----
 S5=build/stage5/mpm
 if [ -x "$S5" ] && command -v valgrind >/dev/null 2>&1; then
     echo
-    echo "stage 5: the 50k disks (no cracks, no contact), stage 1 against stage 5"
+    echo "stages 5 to 8: the 50k disks (no cracks, no contact), each against stage 1"
     read -r pts i1 t < <(bash tools/task1_cost.sh build/stage1/mpm tools/bench/disks_50k.cfg "")
-    read -r pts i5 t < <(bash tools/task1_cost.sh "$S5" tools/bench/disks_50k.cfg "")
-    printf '  instructions per particle-step (callgrind, musl): stage 1 %s, stage 5 %s: %s\n' \
-        "$i1" "$i5" "$(awk -v a="$i1" -v b="$i5" 'BEGIN { d = (b - a) / a
-            print (d <= 0.001 && d >= -0.001) ? "same within 0.1 %" : "DIFFERENT" }')"
+    for st in 5 6 7 8; do
+        [ -x "build/stage$st/mpm" ] || continue
+        read -r pts i5 t < <(bash tools/task1_cost.sh "build/stage$st/mpm" tools/bench/disks_50k.cfg "")
+        printf '  instructions per particle-step (callgrind, musl): stage 1 %s, stage %s %s: %s\n' \
+            "$i1" "$st" "$i5" "$(awk -v a="$i1" -v b="$i5" 'BEGIN { d = (b - a) / a
+                print (d <= 0.001 && d >= -0.001) ? "same within 0.1 %" : "DIFFERENT" }')"
+    done
     N=${STEPS50K:-200}
     read -r npts dt nx ny < <(MPM=$S5 header tools/bench/disks_50k.cfg)
     ratios=()

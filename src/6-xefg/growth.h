@@ -33,7 +33,10 @@ typedef struct XefgGrowthSettings {
     double max_speed;  /**< a tip grows again only length / max_speed
                             after its last event (0: no limit) */
     double radius;     /**< radius of the half disk criterion = "average"
-                            averages over (0: Growth::radius, 1.5 h) */
+                            averages over (0: the default,
+                            growth_default_radius()) */
+    double tip_radius[2]; /**< the radius in use at each end: `radius`,
+                            or the default of the material at the tip */
     int line;          /**< line of the group, for messages */
 } XefgGrowthSettings;
 
@@ -59,7 +62,8 @@ typedef struct GrowthEvent {
 typedef struct Growth {
     int ncrack;              /**< entries of set */
     XefgGrowthSettings *set;     /**< per crack (on = 0: the crack stays) */
-    double radius;           /**< the averaging radius ahead of a tip */
+    double radius;           /**< the widest default averaging radius
+                                  ahead of a tip, 1.5 h */
     double k_radius;         /**< r_d of the interaction integral that
                                   K_I, K_II of direction = "hoop" take */
     double h;                /**< the node spacing */
@@ -123,11 +127,21 @@ int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err,
 void growth_free(Growth *g);
 
 /**
+ * @brief The default radius of criterion = "average": the half length
+ *        of the material's critical distance, L / 2 = E' G_f / (2 pi
+ *        f_t^2) (Taylor's point method; chapter 6c), kept within
+ *        [h / 2, 1.5 h] of the node spacing @p h: no narrower than the
+ *        tip's own Gauss points, no wider than the 1.5 h that smooths
+ *        single points. @p Ep is E' (E / (1 - nu^2) in plane strain).
+ */
+double growth_default_radius(double h, double Ep, const CohesiveLaw *L);
+
+/**
  * @brief The stress averaged over the Gauss points within @p radius of
  *        the tip at end @p end of crack @p c and ahead of it (the half
  *        disk its direction points into), weighted by their weights, into
- *        @p s (xx, yy, xy); criterion = "average" passes the crack's
- *        `radius`, or Growth::radius (1.5 h) without one.
+ *        @p s (xx, yy, xy); criterion = "average" passes the tip's
+ *        XefgGrowthSettings::tip_radius.
  *        @return the number of points averaged.
  */
 int growth_tip_stress(const Xefg *x, int c, int end, double radius,

@@ -11,6 +11,19 @@
 
 #include "growth.h"
 
+#define PI 3.14159265358979323846
+
+/// [growth_default_radius]
+double growth_default_radius(double h, double Ep, const CohesiveLaw *L)
+{
+    /* L = (K_Ic / f_t)^2 / pi = E' G_f / (pi f_t^2); the point method
+     * takes the stress at L / 2 ahead of the tip (our reading: the half
+     * disk of that radius) */
+    double half_L = Ep * L->G_f / (2.0 * PI * L->f_t * L->f_t);
+    return fmin(1.5 * h, fmax(half_L, 0.5 * h));
+}
+/// [growth_default_radius]
+
 /// [growth_tip_stress]
 int growth_tip_stress(const Xefg *x, int c, int end, double radius,
                       double s[3])

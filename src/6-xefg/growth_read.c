@@ -78,8 +78,8 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
     XefgGrowthSettings *set = &g->set[index];
     double length = 0.0, most = 0.0, speed = 0.0, radius = 0.0;
     const char *direction = "hoop", *criterion = "average";
-    *set = (XefgGrowthSettings){1, 0.0, 0, 0, 0, 0.0, 0.0,
-                                (int)config_setting_source_line(s)};
+    *set = (XefgGrowthSettings){.on = 1,
+                                .line = (int)config_setting_source_line(s)};
     int has_length = scene_number(r, s, "length", 0, 0.0, &length);
     int has_most = scene_number(r, s, "max_segments", 0, 0.0, &most);
     int has_speed = scene_number(r, s, "max_speed", 0, 0.0, &speed);
@@ -93,7 +93,8 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
     else if (strcmp(criterion, "average") != 0)
         return scene_error(r, at(s, "criterion"), "criterion", "\"%s\": "
                            "expected \"average\" (the default: sigma_1 "
-                           "averaged over 1.5 h ahead of the tip) or \"tip\" "
+                           "averaged over a half disk ahead of the tip) or "
+                           "\"tip\" "
                            "(the cohesive zone's own tip reaches the last "
                            "segment)", criterion);
     if (strcmp(direction, "hoop") == 0)
@@ -120,7 +121,8 @@ int growth_read(Sim *sim, const config_setting_t *s, int index,
         return scene_error(r, at(s, "radius"), "radius", "%g: the radius of "
                            "the half disk ahead of a tip whose stress is "
                            "averaged must be positive (leave it out for "
-                           "1.5 node spacings)", radius);
+                           "L / 2 of the material, within 0.5 to 1.5 node "
+                           "spacings)", radius);
     if (has_radius && set->tip)
         return scene_error(r, at(s, "radius"), "radius", "%g: criterion = "
                            "\"tip\" averages nothing (the radius is the "

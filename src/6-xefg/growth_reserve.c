@@ -126,6 +126,23 @@ static int longest_row(const ShapeRows *R)
     return m;
 }
 
+/** E' of the material at end @p e of crack @p k (its nearest node's):
+ *  E / (1 - nu^2) in plane strain, E in plane stress. */
+static double tip_modulus(const Xefg *x, const Sim *sim, int k, int e)
+{
+    double tip[2], dir[2], best = INFINITY;
+    crack_line_tip(&x->crack[k], e, tip, dir);
+    int near = 0;
+    for (int I = 0; I < x->nnode; I++) {
+        double d = hypot(x->X[I] - tip[0], x->Y[I] - tip[1]);
+        if (d < best)
+            best = d, near = I;
+    }
+    const Material *m = &sim->scene.mat[sim->pts.mat[near]];
+    return sim->scene.run.plane == PLANE_STRAIN
+               ? m->E / (1.0 - m->nu * m->nu) : m->E;
+}
+
 /// [growth_reserve]
 int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err, size_t errlen)
 {
@@ -139,11 +156,17 @@ int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err, size_t errlen)
         dmax = fmax(dmax, x->d[I]);
     }
     g->h = h;
-    /* our choice: sigma_1 averaged over the half disk of radius 1.5 h
-     * ahead of the tip, about 3.5 cells (some 56 Gauss points of 4 x 4):
-     * wide enough to smooth the stress of single points, near enough that
-     * the stress of the tip's own region decides */
+    /* our choice: sigma_1 averaged over the half disk ahead of the tip,
+     * at most 1.5 h, about 3.5 cells (some 56 Gauss points of 4 x 4),
+     * wide enough to smooth the stress of single points; by default no
+     * wider than L / 2 of the material at the tip (chapter 6c) */
     g->radius = 1.5 * h;
+    for (int k = 0; k < g->ncrack && k < x->ncrack; k++)
+        for (int e = 0; e < 2 && g->set[k].on; e++)
+            g->set[k].tip_radius[e] = g->set[k].radius > 0.0
+                ? g->set[k].radius
+                : growth_default_radius(h, tip_modulus(x, sim, k, e),
+                                        &coh->set[k].law);
     /* our choice: the interaction integral's ring from 2 h to 4 h, as
      * scene_centre_crack.c's r_d = 2 h gave K within 1.6 % of Griffith's */
     g->k_radius = 2.0 * h;

@@ -36,8 +36,7 @@ int growth_after_step(Sim *sim, Xefg *x, Growth *g)
             if (!x->crack[k].tip[e])
                 continue;
             double s[3], tip[2], ahead[2], dir[2];
-            double r = g->set[k].radius > 0.0 ? g->set[k].radius : g->radius;
-            if (growth_tip_stress(x, k, e, r, s) == 0)
+            if (growth_tip_stress(x, k, e, g->set[k].tip_radius[e], s) == 0)
                 continue;
             crack_line_tip(&x->crack[k], e, tip, ahead);
             double s1 = growth_criterion(s, ahead, dir), K[2] = {0.0, 0.0};

@@ -1,31 +1,25 @@
 /**
  * @file scene_kalthoff_xefg.c
- * @brief Kalthoff and Winkler's plate by XEFG at two node spacings
- *        (issue 27; chapter 6b, "Kalthoff-Winkler"): where the crack
+ * @brief Kalthoff and Winkler's plate by XEFG at three node spacings
+ *        (issue 27; chapter 6c, "Kalthoff-Winkler"): where the crack
  *        starts, how fast it runs, where it does not grow, and the energy
  *        balance of the run.
  *
- * The scenes: tests/6-xefg/scenes/kalthoff_h1_667.cfg (h = 5/3 mm) and
- * kalthoff_coarse.cfg (h = 1.25 mm), the upper half plate (100 x 100 mm,
- * maraging steel, plane strain, struck at 16.5 m/s below the notch), the
- * notch a cohesive crack (linear, f_t = 1000 MPa, G_f = 22.1 N/mm) whose
- * tip grows by the largest hoop stress of K_I, K_II, each run to 50
- * microseconds. (At h = 2.5 and 25/12 mm no segment grows in 90
- * microseconds: the averaged sigma_1 never reaches f_t; make
- * fig-kalthoff lists h = 2.5.)
- *
- * With KALTHOFF_XEFG_OPEN set, h = 1 mm too (figures/fig-growth/
- * kalthoff_xefg.cfg at f_t = 1000 MPa, 50 microseconds), three times:
- * without a limit its crack speed bound is open (printed, not asserted);
- * with growth.max_speed = c_R the speed is below c_R by construction, and
- * the other bounds (kink, spread, growth at the notch tip only, balance)
- * are asserted on that run; and with growth.radius = L / 2, the
- * averaging radius a length of the material instead of 1.5 h (L =
- * E' G_f / (pi f_t^2) = (K_Ic / f_t)^2 / pi, the critical distance of
- * Taylor's theory, whose point method takes the stress at L / 2; E' = E /
- * (1 - nu^2), plane strain; chapter 6c), all bounds asserted, the speed's
- * too (added after the runs of chapter 6c that tried it; the bounds are
- * the file's, unchanged).
+ * The scenes: tests/6-xefg/scenes/kalthoff_h1_667.cfg (h = 5/3 mm),
+ * kalthoff_coarse.cfg (h = 1.25 mm) and figures/fig-growth/
+ * kalthoff_xefg.cfg at f_t = 1000 MPa (h = 1 mm), the upper half plate
+ * (100 x 100 mm, maraging steel, plane strain, struck at 16.5 m/s below
+ * the notch), the notch a cohesive crack (linear, f_t = 1000 MPa, G_f =
+ * 22.1 N/mm) whose tip grows by the largest hoop stress of K_I, K_II,
+ * each run to 50 microseconds, with the default criterion: sigma_1
+ * averaged over the half disk of radius L / 2 = E' G_f / (2 pi f_t^2)
+ * (0.734 mm; h / 2 at 5/3 mm), the critical distance of Taylor's point
+ * method, E' = E / (1 - nu^2) (growth_default_radius(), chapter 6c;
+ * default_radius_is_the_materials checks the radius each scene gets).
+ * The default was 1.5 h until chapter 6c's runs; with it the speed at
+ * h = 1 was 1.26 c_R, and KALTHOFF_XEFG_OPEN=1 runs that too (printed,
+ * not asserted), and with growth.max_speed = c_R beside it. The bounds
+ * below are the file's, unchanged since its first run.
  *
  * Bounds, fixed before the first run of this file:
  * - the first segment leaves the notch at an angle in [60, 72] degrees to
@@ -68,7 +62,7 @@
 #define PI 3.14159265358979323846
 #define DEG (180.0 / PI)
 #define WINDOW 4                /* segments in a speed window */
-#define NSPACING 3              /* the spacings: 5/3, 1.25, 1 (open) */
+#define NSPACING 3              /* the spacings: 5/3, 1.25, 1 */
 
 /** What the spacings' cases leave for the last (cmocka's group state). */
 typedef struct KwSpread {
@@ -223,46 +217,91 @@ static void kalthoff_h1_25(void **state)
 }
 
 /** h = 1 mm (make fig-growth's plate at f_t = 1000 MPa, to 50
- *  microseconds), only with KALTHOFF_XEFG_OPEN set (two runs of about 60
- *  s of CPU each). Without a limit its crack speed over four segments is
- *  above c_R (1.26 c_R in make fig-kalthoff: the three segments of the
- *  first steps and the next one take 1.1 microseconds), printed as OPEN;
- *  with growth.max_speed = c_R (the tip waits length / c_R between
- *  segments) the speed is below c_R by construction, and the bounds that
- *  the limit does not fix, the kink (and its spread with the other
- *  spacings), the growth from the notch tip only and the energy balance,
- *  are asserted on that run. */
-static void kalthoff_h1_open(void **state)
+ *  microseconds; about a minute of CPU), every bound asserted, the
+ *  speed's too. */
+static void kalthoff_h1(void **state)
 {
     KwSpread *k = *state;
+    const char *const over[] = {"cracks.[0].cohesive.f_t=1000",
+                                "run.time=0.05", "run.snapshots=0", NULL};
+    kalthoff("figures/fig-growth/kalthoff_xefg.cfg", over, &k->kink[2],
+             &k->h[2], 0);
+}
+
+/** With KALTHOFF_XEFG_OPEN set, h = 1 mm twice more (a minute of CPU
+ *  each): with the radius the default was before chapter 6c's runs,
+ *  growth.radius = 1.5 h, its crack speed over four segments is above c_R
+ *  (1.26 c_R: the three segments of the first steps and the next one take
+ *  1.1 microseconds), printed as OPEN; with that radius and
+ *  growth.max_speed = c_R (the tip waits length / c_R between segments)
+ *  the speed is below c_R by construction, and the bounds that the limit
+ *  does not fix, the kink, the growth from the notch tip only and the
+ *  energy balance, are asserted on that run. */
+static void kalthoff_h1_open(void **state)
+{
+    (void)state;
     if (!getenv("KALTHOFF_XEFG_OPEN")) {
-        printf("  h = 1 mm is open (the crack speed over 4 segments above "
-               "c_R in make fig-kalthoff); KALTHOFF_XEFG_OPEN=1 runs it\n");
+        printf("  h = 1 mm with radius 1.5 h (the old default: its crack "
+               "speed over 4 segments is above c_R): KALTHOFF_XEFG_OPEN=1 "
+               "runs it\n");
         return;
     }
     double nu = 0.3, E = 190000.0, rho = 8e-3;   /* the scene's steel */
     char limit[96];
     snprintf(limit, sizeof limit, "cracks.[0].cohesive.growth.max_speed=%.17g",
              rayleigh_ratio(nu) * sqrt(E / (2.0 * (1.0 + nu) * rho)));
-    const char *const over[] = {"cracks.[0].cohesive.f_t=1000",
-                                "run.time=0.05", "run.snapshots=0", NULL};
+    const char *const wide[] = {"cracks.[0].cohesive.f_t=1000",
+                                "run.time=0.05", "run.snapshots=0",
+                                "cracks.[0].cohesive.growth.radius=1.5", NULL};
     const char *const limited[] = {"cracks.[0].cohesive.f_t=1000",
-                                   "run.time=0.05", "run.snapshots=0", limit,
-                                   NULL};
-    char radius[96];                   /* L / 2 = E' G_f / (2 pi f_t^2) */
-    snprintf(radius, sizeof radius, "cracks.[0].cohesive.growth.radius=%.17g",
-             E / (1.0 - nu * nu) * 22.1 / (2.0 * PI * 1000.0 * 1000.0));
-    const char *const material[] = {"cracks.[0].cohesive.f_t=1000",
-                                    "run.time=0.05", "run.snapshots=0", radius,
-                                    NULL};
+                                   "run.time=0.05", "run.snapshots=0",
+                                   "cracks.[0].cohesive.growth.radius=1.5",
+                                   limit, NULL};
     double kink, h;
-    printf("  h = 1 mm with %s:\n", radius);
-    kalthoff("figures/fig-growth/kalthoff_xefg.cfg", material, &kink, &h, 0);
-    printf("  h = 1 mm without a limit:\n");
-    kalthoff("figures/fig-growth/kalthoff_xefg.cfg", over, &kink, &h, 1);
-    printf("  h = 1 mm with %s:\n", limit);
-    kalthoff("figures/fig-growth/kalthoff_xefg.cfg", limited, &k->kink[2],
-             &k->h[2], 0);
+    printf("  h = 1 mm, radius 1.5 mm, without a limit:\n");
+    kalthoff("figures/fig-growth/kalthoff_xefg.cfg", wide, &kink, &h, 1);
+    printf("  h = 1 mm, radius 1.5 mm, with %s:\n", limit);
+    kalthoff("figures/fig-growth/kalthoff_xefg.cfg", limited, &kink, &h, 0);
+}
+
+/** The radius the tips average over by default is L / 2 of the material
+ *  at the tip, L = E' G_f / (pi f_t^2), E' = E / (1 - nu^2) in plane
+ *  strain, within [h / 2, 1.5 h] (growth_default_radius()): L / 2 at
+ *  h = 1 and 1.25 mm, h / 2 at 5/3 (L / 2 = 0.734 mm is below it), 1.5 h
+ *  on the growth bar (L / 2 = 8 mm); a scene's radius wins. */
+static void default_radius_is_the_materials(void **state)
+{
+    (void)state;
+    double nu = 0.3, E = 190000.0;               /* the scene's steel */
+    double half_L = E / (1.0 - nu * nu) * 22.1 / (2.0 * PI * 1e6);
+    const char *const f1000[] = {"cracks.[0].cohesive.f_t=1000", NULL};
+    const char *const given[] = {"cracks.[0].cohesive.f_t=1000",
+                                 "cracks.[0].cohesive.growth.radius=2", NULL};
+    struct {
+        const char *file;
+        const char *const *over;
+        double want;          /* NAN: 1.5 h; 0: h / 2 */
+    } c[] = {
+        {"figures/fig-growth/kalthoff_xefg.cfg", f1000, half_L},
+        {"tests/6-xefg/scenes/kalthoff_coarse.cfg", NULL, half_L},
+        {"tests/6-xefg/scenes/kalthoff_h1_667.cfg", NULL, 0.0},
+        {"tests/6-xefg/scenes/growth_bar.cfg", NULL, NAN},
+        {"figures/fig-growth/kalthoff_xefg.cfg", given, 2.0},
+    };
+    TkBounds b = {0, 0};
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+        Sim *s = tk_load_file(c[i].file, c[i].over);
+        Growth *g = xefg_of(s)->grow;
+        double want = isnan(c[i].want) ? 1.5 * g->h
+                      : c[i].want == 0.0 ? 0.5 * g->h : c[i].want;
+        double r = g->set[0].tip_radius[1];
+        printf("  %s: h = %g mm, radius %.6f mm (expected %.6f; L / 2 of "
+               "the steel %.6f)\n", c[i].file, g->h, r, want, half_L);
+        tk_bound(&b, 4, fabs(r - want) <= 1e-12 * want, "%s: radius %.17g, "
+                 "expected %.17g", c[i].file, r, want);
+        tk_free(s);
+    }
+    tk_bounds_finish(&b);
 }
 
 /** The first kinks of the spacings run within 3 degrees of each other. */
@@ -270,7 +309,7 @@ static void kink_spread(void **state)
 {
     KwSpread *k = *state;
     double lo = INFINITY, hi = -INFINITY;
-    int n = getenv("KALTHOFF_XEFG_OPEN") ? NSPACING : NSPACING - 1;
+    int n = NSPACING;
     for (int i = 0; i < n; i++) {
         printf("  h = %g mm: kink %.2f degrees\n", k->h[i], k->kink[i]);
         lo = fmin(lo, k->kink[i]);
@@ -306,8 +345,10 @@ static int teardown(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(default_radius_is_the_materials),
         cmocka_unit_test(kalthoff_h1_667),
         cmocka_unit_test(kalthoff_h1_25),
+        cmocka_unit_test(kalthoff_h1),
         cmocka_unit_test(kalthoff_h1_open),
         cmocka_unit_test(kink_spread),
     };

@@ -156,7 +156,7 @@ static void watch(Sim *s, double xline, Seen *v)
     int through = 0, p0 = 0, p1 = 0;
     double s_event = 0.0;
     while (s->step < s->nsteps) {
-        double before = sigma1_ahead(x, 1, g->radius);
+        double before = sigma1_ahead(x, 1, g->set[0].tip_radius[1]);
         int n0 = g->nevent, npt0 = x->coh->npt;
         tk_steps(s, 1);
         if (g->nevent > n0) {
@@ -239,8 +239,9 @@ static void mode_i_grows_straight(void **state)
     double h = x->grow->h;
     int n0 = x->crack[0].n;
     Seen v;
-    printf("  mode I, averaging radius %g mm = 1.5 h, segments of %g mm:\n",
-           x->grow->radius, x->grow->set[0].length);
+    printf("  mode I, averaging radius %g mm = 1.5 h (the bar's L / 2 is "
+           "above it), segments of %g mm:\n", x->grow->set[0].tip_radius[1],
+           x->grow->set[0].length);
     watch(s, 6.0, &v);
     TkBounds b = {0, 0};
     int added = x->crack[0].n - n0;
