@@ -15,6 +15,9 @@
 #      figures/fig-growth/kalthoff_xefg.cfg for XEFG): the paths on the
 #      plate with the experiment's line at 70 degrees, and each method's
 #      first kink;
+#  (e) the DCB's energy release rate at each event against the crack
+#      length, G/G_c, G the FEA's G(a) at the event's opening (1 where a
+#      run's events meet the FEA's G(a) = G_c; every resolution of both);
 #  (d) error against cost on the DCB, for three resolutions per method
 #      (figures/fig-growth/dcb_scene.sh writes the scenes), against the
 #      time loop's wall time: the opening at the first event against the
@@ -231,6 +234,22 @@ for name in kw-mpm $(for ft in $KX_FT; do echo "kw-xefg-$ft"; done); do
     read -r dev xt yt np < <(path_stats "$last" 25)
     echo "$name,$m,$ft,$steps,$loop,$n,$tf,$kink,$xt,$yt,$RUNS/path_$name.txt,$note" >>"$kw"
 done
+# g_<run>.txt for (e): at each event of the DCB runs, "a_before G/G_c",
+# G the FEA's energy release rate of the crack a_before at the event's
+# opening: G = G_c (Delta / Delta_c(a))^2 (G grows as Delta^2 at a fixed
+# length), Delta_c(a) the FEA's opening at G(a) = G_c, interpolated in a
+for spec in $(for h in $MPM_H; do echo "mpm:$h"; done) $(for h in $XEFG_H; do echo "xefg:$h"; done); do
+    IFS=: read -r m h <<<"$spec"
+    xl=0
+    [ "$m" = xefg ] && xl=$(awk -v h="$h" 'BEGIN { print h / 2 }')
+    [ -f "$RUNS/events_dcb-$m-$h.txt" ] || continue
+    awk 'FNR == NR { n++; fa[n] = $1; fd[n] = $4; next }
+        { for (i = 1; i < n; i++)
+              if (fa[i] <= $3 && fa[i + 1] >= $3) {
+                  dc = fd[i] + (fd[i + 1] - fd[i]) * ($3 - fa[i]) / (fa[i + 1] - fa[i])
+                  printf "%.6g %.6g\n", $3, ($2 / dc) ^ 2; break } }' \
+        "$RUNS/fea_$xl.txt" "$RUNS/events_dcb-$m-$h.txt" >"$RUNS/g_dcb-$m-$h.txt"
+done
 # the DCB's paths for the plot: the finest run of each method
 for spec in "mpm:${MPM_H##* }" "xefg:${XEFG_H##* }"; do
     IFS=: read -r m h <<<"$spec"
@@ -281,6 +300,18 @@ done
     echo "off\": more than h, so the straight crack's FEA does not apply to the row;"
     echo "RMS over a = $AS; -: not reached)"
     echo
+    echo "G / G_c at the events whose crack length before them is 52 to 68 mm, G the FEA's"
+    echo "G(a) at the event's opening, G_c (Delta / Delta_c(a))^2 (panel e):"
+    echo
+    printf '%-5s %4s %6s %7s %7s %7s\n' method h events min max mean
+    for spec in $(for h in $MPM_H; do echo "mpm:$h"; done) $(for h in $XEFG_H; do echo "xefg:$h"; done); do
+        IFS=: read -r m h <<<"$spec"
+        awk -v m="$m" -v h="$h" '$1 >= 52 && $1 <= 68 { n++; s += $2; if (n == 1 || $2 < lo) lo = $2; if (n == 1 || $2 > hi) hi = $2 }
+            END { if (n) printf "%-5s %4s %6d %7.3f %7.3f %7.3f\n", m, h, n, lo, hi, s / n
+                  else printf "%-5s %4s %6d %7s %7s %7s\n", m, h, 0, "-", "-", "-" }' \
+            "$RUNS/g_dcb-$m-$h.txt" 2>/dev/null || printf '%-5s %4s %6s\n' "$m" "$h" -
+    done
+    echo
     echo "Kalthoff-Winkler, the upper half, $(awk -v t="$KX_TIME" 'BEGIN { print t * 1000 }') us: CRAMP tests/7-fracture/scenes/"
     echo "kalthoff_half.cfg (G_c = 22.1 N/mm, cells of 1 mm, 2 x 2 points); XEFG"
     echo "figures/fig-growth/kalthoff_xefg.cfg (linear law, G_f = 22.1 N/mm, f_t as"
@@ -319,6 +350,6 @@ kx=""
 for ft in $KX_FT; do kx="$kx $ft"; done
 kkm=$(awk -F, '$1 == "kw-mpm" { print $8 }' "$kw")
 kkx=$(for ft in $KX_FT; do awk -F, -v r="kw-xefg-$ft" '$1 == r { k = $8 } END { printf "%s ", k == "" ? "-" : k }' "$kw"; done)
-gnuplot -e "runs='$RUNS'; out='$OUT/fig-growth.png'; kxt=$(awk -v t="$KX_TIME" 'BEGIN { print t * 1000 }'); hm='${MPM_H##* }'; hx='${XEFG_H##* }'; kx='${kx# }'; ft='$XEFG_FT'; kkm='${kkm:--}'; kkx='${kkx% }'" \
+gnuplot -e "runs='$RUNS'; out='$OUT/fig-growth.png'; kxt=$(awk -v t="$KX_TIME" 'BEGIN { print t * 1000 }'); hm='${MPM_H##* }'; hx='${XEFG_H##* }'; hms='$MPM_H'; hxs='$XEFG_H'; kx='${kx# }'; ft='$XEFG_FT'; kkm='${kkm:--}'; kkx='${kkx% }'" \
     figures/fig-growth/plot.gp || exit 1
 echo "fig-growth: $OUT/fig-growth.png, $txt ($(fig_since "$t_start") s)"

@@ -1,14 +1,16 @@
 # make fig-growth's plot (figures/fig-growth/make.sh writes the data):
-#   gnuplot -e "runs='build/fig-growth'; out='...png'; kxt=90; hm='1'; hx='1'; kx='2000 1000'; ft='1e-3'; kkm='70.7'; kkx='- 70.5'" plot.gp
+#   gnuplot -e "runs='build/fig-growth'; out='...png'; kxt=90; hm='1'; hx='1'; hms='2 1.5 1'; hxs='2 1.5 1'; kx='2000 1000'; ft='1e-3'; kkm='70.7'; kkx='- 70.5'" plot.gp
 # (kxt: the plate's time, microseconds)
 # (kkm, kkx: the first kinks, degrees, of CRAMP and of each XEFG f_t; - none)
 # (a) DCB: crack length against the opening, CRAMP and XEFG (finest h of
 #     each) and the FEA's G(a) = G_c; (b) the DCB's paths; (c) Kalthoff-
 #     Winkler's paths near the notch tip with the experiment's 70 degrees;
-#     (d) the DCB's opening error against the time loop's wall time.
-set terminal pngcairo size 1400,1100 font ",12" enhanced
+#     (d) the DCB's opening error against the time loop's wall time;
+#     (e) the DCB's G/G_c at each event against the crack length (G the
+#     FEA's G(a) at the event's opening), every resolution of both.
+set terminal pngcairo size 2100,1100 font ",12" enhanced
 set output out
-set multiplot layout 2,2 margins 0.07,0.98,0.07,0.95 spacing 0.08,0.1
+set multiplot layout 2,3 margins 0.05,0.98,0.07,0.95 spacing 0.06,0.1
 cm = '#0072B2'; cx = '#D55E00'; cf = '#000000'; ce = '#009E73'
 # the DCB paths' largest |y|, for (b)'s key
 stats runs.'/path_dcb-mpm.txt' using (abs($2)) nooutput name 'PM'
@@ -79,4 +81,22 @@ plot runs.'/plot_cost.txt' index 0 using 1:(100 * $2) with linespoints lw 2 pt 7
      '' index 1 using 1:(100 * $2) with linespoints lw 2 pt 5 ps 1.3 lc rgb cx title "XEFG, |error| at the first event (a = 50 mm)", \
      '' index 1 using 1:(100 * $3) with linespoints lw 2 dt 2 pt 4 ps 1.3 lc rgb cx title "XEFG, RMS error at a = 54, 58, 62, 66 mm", \
      '' index 1 using 1:(100 * $2):4 with labels offset 0,-1 tc rgb cx notitle
+
+# (e)
+set title "(e) DCB: the energy release rate at each event against the crack length"
+set xlabel "crack length a before the event (mm)"
+set ylabel "G / G_c (G: the FEA's G(a) at the event's opening)"
+unset logscale xy
+set autoscale
+set xrange [49:76]
+set yrange [0.78:1.06]
+set key bottom center maxrows 4 opaque
+pm(i) = int(word('7 9 5', i))
+px(i) = int(word('6 8 4', i))
+set samples 2
+plot 1 with lines lw 2 lc rgb cf title "G = G_c", \
+     for [i=1:words(hms)] runs.'/g_dcb-mpm-'.word(hms, i).'.txt' using 1:2 with linespoints lw 1.5 pt pm(i) ps 1 lc rgb cm \
+         title sprintf("CRAMP, cells %s mm", word(hms, i)), \
+     for [i=1:words(hxs)] runs.'/g_dcb-xefg-'.word(hxs, i).'.txt' using 1:2 with linespoints lw 1.5 dt 2 pt px(i) ps 1 lc rgb cx \
+         title sprintf("XEFG, h = %s mm", word(hxs, i))
 unset multiplot
