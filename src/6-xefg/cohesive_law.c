@@ -39,6 +39,13 @@ double cohesive_envelope(const CohesiveLaw *L, double delta)
 }
 /// [cohesive_envelope]
 
+double cohesive_softening_slope(const CohesiveLaw *L)
+{
+    if (L->kind == COHESIVE_LINEAR)
+        return -L->f_t / (cohesive_delta_c(L) - cohesive_delta0(L));
+    return -L->f_t * L->f_t / softening_energy(L);
+}
+
 double cohesive_envelope_work(const CohesiveLaw *L, double delta)
 {
     double d0 = cohesive_delta0(L);

@@ -48,6 +48,14 @@ double cohesive_delta0(const CohesiveLaw *L);
 double cohesive_delta_c(const CohesiveLaw *L);
 
 /**
+ * @brief The slope of the softening branch just past delta_0, d t / d
+ *        delta (stress / length, negative): -f_t / (delta_c - delta_0)
+ *        for the linear law, -f_t^2 / G_s for the exponential (G_s = G_f
+ *        - f_t delta_0 / 2, the decay energy).
+ */
+double cohesive_softening_slope(const CohesiveLaw *L);
+
+/**
  * @brief The envelope t(delta) for a growing effective opening
  *        delta >= 0: K delta up to delta_0, then the softening curve.
  */

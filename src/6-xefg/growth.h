@@ -16,6 +16,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "acoustic_tensor.h"
 #include "cell_list.h"
 #include "cohesive_law.h"
 #include "quadrature.h"
@@ -37,6 +38,11 @@ typedef struct XefgGrowthSettings {
                             growth_default_radius()) */
     double tip_radius[2]; /**< the radius in use at each end: `radius`,
                             or the default of the material at the tip */
+    double tangent[2][3][3]; /**< the elastic tangent of the material at
+                            each end (Voigt, acoustic_elastic_tangent()) */
+    double softening;  /**< H of the bulk's Rankine tangent at a tip: h
+                            times the law's softening slope (the crack
+                            band of width h; Bazant and Oh 1983) */
     int line;          /**< line of the group, for messages */
 } XefgGrowthSettings;
 
@@ -135,6 +141,21 @@ void growth_free(Growth *g);
  *        single points. @p Ep is E' (E / (1 - nu^2) in plane strain).
  */
 double growth_default_radius(double h, double Ep, const CohesiveLaw *L);
+
+/**
+ * @brief When a tip grows under criterion = "average": the loss of
+ *        material stability of the bulk ahead of it (Rabczuk and Zi,
+ *        abstract; xefg.md 2.4). The bulk's tangent at the averaged stress
+ *        @p s is the elastic @p C while sigma_1 < @p f_t, and on the
+ *        Rankine surface sigma_1 >= f_t the softening tangent of
+ *        acoustic_rankine_tangent() with modulus @p H (< 0); stability is
+ *        lost where det Q(n) <= 0 for some normal n (acoustic_critical(),
+ *        into @p a). For this tangent that is sigma_1 >= f_t with n the
+ *        first principal direction (acoustic_tensor.h derives it).
+ * @return 1 when stability is lost (the tip grows), else 0
+ */
+int growth_stability_lost(const double s[3], double f_t, const double C[3][3],
+                          double H, AcousticCritical *a);
 
 /**
  * @brief The stress averaged over the Gauss points within @p radius of

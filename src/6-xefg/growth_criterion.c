@@ -1,11 +1,12 @@
 /**
  * @file growth_criterion.c
- * @brief When and where a tip grows (xefg.md 2.4; our choice, the paper's
- *        criterion is beyond our transcript): the stress averaged over the
- *        Gauss points ahead of the tip, and Rankine's criterion on it, the
- *        maximum principal stress against f_t, the crack growing normal to
- *        it. For a Rankine softening law this is where the acoustic tensor
- *        first loses its positive determinant, and the normal it gives.
+ * @brief When and where a tip grows (xefg.md 2.4; the paper's criterion
+ *        is beyond our transcript, so the details are our choice): the
+ *        stress averaged over the Gauss points ahead of the tip; the loss
+ *        of stability of the bulk's tangent there (the acoustic tensor of
+ *        a Rankine softening law), which comes when the maximum principal
+ *        stress reaches f_t; the crack growing normal to sigma_1, the
+ *        acoustic tensor's critical normal.
  */
 #include <math.h>
 
@@ -23,6 +24,23 @@ double growth_default_radius(double h, double Ep, const CohesiveLaw *L)
     return fmin(1.5 * h, fmax(half_L, 0.5 * h));
 }
 /// [growth_default_radius]
+
+/// [growth_stability_lost]
+int growth_stability_lost(const double s[3], double f_t, const double C[3][3],
+                          double H, AcousticCritical *a)
+{
+    double sigma1 = 0.5 * (s[0] + s[1]) + hypot(0.5 * (s[0] - s[1]), s[2]);
+    double Ct[3][3];
+    if (sigma1 >= f_t)              /* on the Rankine surface: softening */
+        acoustic_rankine_tangent(C, s, H, Ct);
+    else                            /* inside it: elastic */
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                Ct[i][j] = C[i][j];
+    *a = acoustic_critical(Ct, ACOUSTIC_SAMPLES);
+    return a->unstable;
+}
+/// [growth_stability_lost]
 
 /// [growth_tip_stress]
 int growth_tip_stress(const Xefg *x, int c, int end, double radius,

@@ -126,9 +126,9 @@ static int longest_row(const ShapeRows *R)
     return m;
 }
 
-/** E' of the material at end @p e of crack @p k (its nearest node's):
- *  E / (1 - nu^2) in plane strain, E in plane stress. */
-static double tip_modulus(const Xefg *x, const Sim *sim, int k, int e)
+/** The material at end @p e of crack @p k: its nearest node's. */
+static const Material *tip_material(const Xefg *x, const Sim *sim, int k,
+                                    int e)
 {
     double tip[2], dir[2], best = INFINITY;
     crack_line_tip(&x->crack[k], e, tip, dir);
@@ -138,9 +138,44 @@ static double tip_modulus(const Xefg *x, const Sim *sim, int k, int e)
         if (d < best)
             best = d, near = I;
     }
-    const Material *m = &sim->scene.mat[sim->pts.mat[near]];
-    return sim->scene.run.plane == PLANE_STRAIN
-               ? m->E / (1.0 - m->nu * m->nu) : m->E;
+    return &sim->scene.mat[sim->pts.mat[near]];
+}
+
+/** The averaging radius, the elastic tangent and the bulk's softening
+ *  modulus at each end of crack @p k (XefgGrowthSettings); -1 with a
+ *  message where the band of width h softens faster than the elastic
+ *  modulus (a snap-back: the Rankine tangent's stability test no longer
+ *  holds, acoustic_tensor.h). */
+static int tip_laws(Growth *g, const Xefg *x, const Sim *sim, int k,
+                    double h, char *err, size_t errlen)
+{
+    XefgGrowthSettings *set = &g->set[k];
+    const CohesiveLaw *L = &x->coh->set[k].law;
+    PlaneKind plane = sim->scene.run.plane;
+    /* the crack band (Bazant and Oh): a strain over h opens the crack h eps */
+    set->softening = h * cohesive_softening_slope(L);
+    for (int e = 0; e < 2; e++) {
+        const Material *m = tip_material(x, sim, k, e);
+        double Ep = plane == PLANE_STRAIN ? m->E / (1.0 - m->nu * m->nu) : m->E;
+        set->tip_radius[e] = set->radius > 0.0
+                                 ? set->radius
+                                 : growth_default_radius(h, Ep, L);
+        acoustic_elastic_tangent(m->E, m->nu, plane, set->tangent[e]);
+        double h0 = set->tangent[e][0][0];         /* m : C : m, isotropic */
+        if (!(set->softening > -h0)) {
+            char at[SCENE_AT_LEN];
+            snprintf(err, errlen, "%s: growth: the bulk's softening over a "
+                     "node spacing, h |dt / d delta| of the law = %g, is "
+                     "not below the elastic modulus %g (a snap-back, which "
+                     "the stability check of the Rankine tangent does not "
+                     "cover): refine the spacing h = %g or raise G_f",
+                     scene_lines_at(sim->scene.lines, sim->scene.file,
+                                    set->line, at, SCENE_AT_LEN),
+                     -set->softening, h0, h);
+            return -1;
+        }
+    }
+    return 0;
 }
 
 /// [growth_reserve]
@@ -162,11 +197,8 @@ int growth_build(Growth *g, Xefg *x, const Sim *sim, char *err, size_t errlen)
      * wider than L / 2 of the material at the tip (chapter 6c) */
     g->radius = 1.5 * h;
     for (int k = 0; k < g->ncrack && k < x->ncrack; k++)
-        for (int e = 0; e < 2 && g->set[k].on; e++)
-            g->set[k].tip_radius[e] = g->set[k].radius > 0.0
-                ? g->set[k].radius
-                : growth_default_radius(h, tip_modulus(x, sim, k, e),
-                                        &coh->set[k].law);
+        if (g->set[k].on && tip_laws(g, x, sim, k, h, err, errlen))
+            return -1;
     /* our choice: the interaction integral's ring from 2 h to 4 h, as
      * scene_centre_crack.c's r_d = 2 h gave K within 1.6 % of Griffith's */
     g->k_radius = 2.0 * h;

@@ -39,11 +39,19 @@ int growth_after_step(Sim *sim, Xefg *x, Growth *g)
             if (growth_tip_stress(x, k, e, g->set[k].tip_radius[e], s) == 0)
                 continue;
             crack_line_tip(&x->crack[k], e, tip, ahead);
+            /* where: normal to sigma_1, the critical normal of the
+             * acoustic tensor below, in closed form (det Q is flat to
+             * fourth order there: acoustic_critical() finds it to 1e-4) */
             double s1 = growth_criterion(s, ahead, dir), K[2] = {0.0, 0.0};
-            if (g->set[k].tip)                /* when: the cohesive zone's tip */
+            AcousticCritical ac;
+            if (g->set[k].tip) {              /* when: the cohesive zone's tip */
                 s1 = growth_tip_zone(g, x, k, e, L);
-            if (!(s1 >= L->f_t))
-                continue;                            /* when: Rankine */
+                if (!(s1 >= L->f_t))
+                    continue;
+            } else if (!growth_stability_lost(s, L->f_t, g->set[k].tangent[e],
+                                              g->set[k].softening, &ac)) {
+                continue;          /* when: the bulk's loss of stability */
+            }
             if (g->set[k].max_speed > 0.0 &&       /* at most max_speed */
                 grew_within(g, k, e, sim->t,
                             g->set[k].length / g->set[k].max_speed)) {

@@ -30,12 +30,18 @@
  *   so "1e-6 relative" is |H_crit| <= 1e-6 h0, found by bisection of the
  *   sign of min det Q on [-h0/2, h0/2]; min det Q > 0 at H = +1e-4 h0 and
  *   < 0 at H = -1e-4 h0; past the snap-back limit, H = -2 h0, > 0 again.
+ * - growth asks it (growth_stability_lost(), the steel of Kalthoff's
+ *   plate): the six states scaled to sigma_1 = 0.5, 0.999, 1, 1.001 and 2
+ *   f_t, H = -0.1 h0 and -0.5 h0: lost exactly when sigma_1 >= f_t, with
+ *   det Q < 0 and the critical normal within 0.5 deg of n1; kept (det
+ *   Q > 0) otherwise.
  * Each bound is checked in plane strain and in plane stress.
  */
 #include <stdint.h>
 #include <stdio.h>
 
 #include "acoustic_tensor.h"
+#include "growth.h"
 #include "testkit.h"
 
 static const double PI = 3.14159265358979323846;
@@ -240,6 +246,54 @@ static void rankine_direction(void **state)
     }
 }
 
+/** Growth asks the acoustic tensor (growth_stability_lost()): at each
+ *  state scaled so that sigma_1 is 0.5, 0.999, 1, 1.001 and 2 times f_t,
+ *  in plane strain and plane stress, with H = -0.1 h0 and -0.5 h0 (the
+ *  crack band's modulus), stability is lost exactly when sigma_1 >= f_t
+ *  (the Rankine tangent's H_crit = 0), det Q < 0 there, and the critical
+ *  normal is n1 within 0.5 degrees (issue 27's bound). */
+static void growth_asks_the_acoustic_tensor(void **state)
+{
+    (void)state;
+    static const double scale[5] = {0.5, 0.999, 1.0, 1.001, 2.0};
+    const double E = 190000.0, nu = 0.3, f_t = 1000.0;   /* the steel */
+    double worst = 0.0;
+    int lost = 0, kept = 0;
+    for (int p = 0; p < 2; p++) {
+        PlaneKind plane = p ? PLANE_STRESS : PLANE_STRAIN;
+        double C[3][3];
+        acoustic_elastic_tangent(E, nu, plane, C);
+        for (int k = 0; k < 6; k++)
+            for (int j = 0; j < 5; j++)
+                for (int h = 1; h <= 5; h += 4) {
+                    double s[3];
+                    stress_of(k, s);
+                    double f = scale[j] * f_t / STATES[k].s1;
+                    for (int i = 0; i < 3; i++)
+                        s[i] *= f;
+                    double sigma1 = 0.5 * (s[0] + s[1]) +
+                                    hypot(0.5 * (s[0] - s[1]), s[2]);
+                    AcousticCritical a;
+                    int u = growth_stability_lost(s, f_t, C, -0.1 * h * C[0][0],
+                                                  &a);
+                    assert_int_equal(u, sigma1 >= f_t);
+                    if (u) {
+                        double gap = angle_gap(a.phi, STATES[k].deg * DEG);
+                        worst = fmax(worst, gap);
+                        assert_true(a.det_min < 0.0);
+                        assert_true(gap <= 0.5 * DEG);
+                        lost++;
+                    } else {
+                        assert_true(a.det_min > 0.0);
+                        kept++;
+                    }
+                }
+    }
+    printf("  %d states lost stability (sigma_1 >= f_t), %d kept it; the "
+           "critical normal within %.2e degrees of n1\n", lost, kept,
+           worst / DEG);
+}
+
 /** min det Q of the Rankine tangent at stress state @p k and modulus H. */
 static double min_det(const double C[3][3], int k, double H)
 {
@@ -292,6 +346,7 @@ int main(void)
         cmocka_unit_test(isotropic_elastic),
         cmocka_unit_test(rankine_direction),
         cmocka_unit_test(critical_modulus),
+        cmocka_unit_test(growth_asks_the_acoustic_tensor),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

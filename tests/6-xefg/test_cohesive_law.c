@@ -15,10 +15,17 @@
  *   traction, the history unchanged, to 1e-12; reloading past dmax
  *   returns to the envelope to 1e-12;
  * - compression: t_n = K delta_n and stored K delta_n^2 / 2, to 1e-12;
+ * - the softening slope just past delta_0 (cohesive_softening_slope(),
+ *   the crack band's modulus in growth) against a one-sided difference
+ *   of the envelope over 1e-7 of delta_c - delta_0 (linear) or of
+ *   G_f / f_t (exponential): to 1e-6 relative (the difference's own
+ *   error: the linear branch is straight, the exponential's curvature
+ *   over the step is 5e-8 of its slope);
  * - along a path of opening, unloading, closing, reopening and sliding
  *   (beta = 1) the work of the tractions, by the trapezoid rule on 4e5
  *   steps, equals stored + dissipated to 1e-6 of G_f.
  */
+#include <math.h>
 #include <stdio.h>
 
 #include "cohesive_law.h"
@@ -56,6 +63,22 @@ static void peak_and_end(void **state)
     double far = cohesive_envelope(&expo, 40.0 * expo.G_f / expo.f_t);
     printf("  exponential t(40 G_f / f_t) = %.3g\n", far);
     assert_true(far <= 1e-12 * expo.f_t);
+}
+
+static void softening_slope(void **state)
+{
+    (void)state;
+    for (int k = 0; k < 2; k++) {
+        const CohesiveLaw *L = k ? &expo : &linear;
+        double d0 = cohesive_delta0(L);
+        double step = 1e-7 * (k ? L->G_f / L->f_t : cohesive_delta_c(L) - d0);
+        double fd = (cohesive_envelope(L, d0 + step) - L->f_t) / step;
+        double slope = cohesive_softening_slope(L);
+        printf("  %s: slope %.10g, difference %.10g\n",
+               k ? "exponential" : "linear", slope, fd);
+        assert_true(slope < 0.0);
+        assert_close(slope, fd, 1e-6 * fabs(slope));
+    }
 }
 
 static void area_is_G_f(void **state)
@@ -161,6 +184,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(peak_and_end),
+        cmocka_unit_test(softening_slope),
         cmocka_unit_test(area_is_G_f),
         cmocka_unit_test(extrinsic_limit),
         cmocka_unit_test(secant_unloading_and_penalty),
