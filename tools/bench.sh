@@ -4,9 +4,11 @@
 # crack costs (stage 2), what the crossing step costs by search (stage 3)
 # and what contact costs (stage 4: crack faces; bodies through contact groups);
 # error against cost (stage 5, a subset of make fig-tradeoff) and, at the
-# end, CRAMP against XEFG on the DCB (stage 6, tools/bench_xefg_dcb.sh) and
-# what the J-integral and growth cost (stage 7, tools/bench_growth.sh) and
-# what the shape functions cost (stage 8, tools/bench_shapes.sh).
+# end, CRAMP against XEFG on the DCB (stage 6, tools/bench_xefg_dcb.sh),
+# what a growing crack costs XEFG against a stationary one (stage 6,
+# tools/bench_xefg_growth.sh), what the J-integral and growth cost (stage 7,
+# tools/bench_growth.sh) and what the shape functions cost (stage 8,
+# tools/bench_shapes.sh).
 #
 # Speed: particle-steps per second on the two Sulsky disks refined to about
 # 50,000 and 200,000 points (tools/bench/disks_*.cfg).  Each case runs N
@@ -27,7 +29,8 @@
 #
 # Environment: MPM (default build/stage1/mpm), SCHEMES (default
 # "usl musl usf"), REPEAT (default 5), PIN (e.g. "taskset -c 2"), STEPS50K / STEPS200K (N),
-# THREAD_REPEAT (default 3: the threads block's runs of each kind).
+# THREAD_REPEAT (default 3: the threads block's runs of each kind), XGROW_REPEAT
+# (default 3: the pairs of tools/bench_xefg_growth.sh).
 set -u
 cd "$(dirname "$0")/.."
 MPM=${MPM:-build/stage1/mpm}
@@ -394,6 +397,10 @@ S6=build/stage6/mpm
 if [ -x "$S6" ]; then
     echo
     MPM=$S6 WORK="$WORK" bash tools/bench_xefg_dcb.sh
+    # a growing crack against the stationary one: tools/bench_xefg_growth.sh
+    # (it runs alone too; about 40 s a pair)
+    echo
+    MPM=$S6 WORK="$WORK" REPEAT="${XGROW_REPEAT:-3}" bash tools/bench_xefg_growth.sh
 fi
 
 # ---- stage 7: what J and growth cost -----------------------------------------
