@@ -12,6 +12,7 @@
 
 #include "growth.h"
 
+/** pi (M_PI is not C11). */
 #define PI 3.14159265358979323846
 
 /// [growth_default_radius]
