@@ -53,6 +53,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "balance.h"
 #include "cohesive.h"
 #include "growth.h"
 #include "hoop_angle.h"
@@ -90,16 +91,6 @@ static double rayleigh_ratio(double nu)
     return 0.5 * (lo + hi);
 }
 
-/** The energy balance's error now: in - kinetic - strain - cohesive
- *  stored - dissipated (mJ), with the work put in in @p in. */
-static double balance_error(const Sim *s, double *in)
-{
-    const Xefg *x = xefg_of(s);
-    *in = x->e0 + x->w_held;
-    return *in - xefg_kinetic_energy(x) - xefg_strain_energy(x, s) -
-           cohesive_stored_energy(x->coh) - cohesive_dissipated_energy(x->coh);
-}
-
 /** The largest speed of the tip over windows of @p w events (mm/ms):
  *  the path between event k and event k + w over the time between
  *  them. */
@@ -132,12 +123,12 @@ static void kalthoff(const char *file, const char *const *over, double *kink,
     while (s->step < s->nsteps) {
         tk_steps(s, 1);
         if (s->step % 10 == 0 || s->step == s->nsteps) {
-            double e = balance_error(s, &in);
+            double e = xefg_balance_error(s, &in);
             if (fabs(e) > fabs(err))
                 err = e, tmax = s->t;
         }
     }
-    double end_err = balance_error(s, &in);
+    double end_err = xefg_balance_error(s, &in);
     *h = g->h;
     *kink = NAN;
     int others = 0, behind = 0;

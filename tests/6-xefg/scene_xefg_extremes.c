@@ -51,6 +51,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "balance.h"
 #include "cohesive.h"
 #include "growth.h"
 #include "quadrature.h"
@@ -59,16 +60,6 @@
 #define BAR "tests/6-xefg/scenes/growth_bar.cfg"
 #define DIAGONAL "tests/6-xefg/scenes/growth_diagonal.cfg"
 
-/** The energy balance error over the energy in (as scene_xefg_growth.c). */
-static double balance(const Sim *s)
-{
-    const Xefg *x = xefg_of(s);
-    double in = x->e0 + x->w_held;
-    double err = in - xefg_kinetic_energy(x) - xefg_strain_energy(x, s) -
-                 cohesive_stored_energy(x->coh) -
-                 cohesive_dissipated_energy(x->coh) - x->w_damped;
-    return fabs(err) / in;
-}
 
 /** Are the parameters' u, v and the Gauss points' stresses finite? */
 static int all_finite(const Xefg *x)
@@ -156,9 +147,9 @@ static void clip_run(double rel, Clip *c)
         int n0 = x->grow->nevent;
         tk_steps(s, 1);
         if (x->grow->nevent > n0 || s->step % 100 == 0)
-            c->worst = fmax(c->worst, balance(s));
+            c->worst = fmax(c->worst, xefg_balance(s));
     }
-    c->worst = fmax(c->worst, balance(s));
+    c->worst = fmax(c->worst, xefg_balance(s));
     c->at_end = clipped(x, 0, r);
     if (c->at_end) {
         c->ratio[0] = fmin(c->ratio[0], r[0]);
@@ -295,7 +286,7 @@ static void tip_on_a_gauss_point(void **state)
         memcpy(gy, x->gy, sizeof(double) * (size_t)ng);
         tk_steps(s, 1);
         if (s->step % 100 == 0)
-            worst = fmax(worst, balance(s));
+            worst = fmax(worst, xefg_balance(s));
         if (g->nevent == n0)
             continue;
         const GrowthEvent *ev = &g->event[g->nevent - 1];
@@ -312,7 +303,7 @@ static void tip_on_a_gauss_point(void **state)
         was_there += there <= 1e-12 * h;
         land = fmax(land, off);
         clear = fmin(clear, near);
-        worst = fmax(worst, balance(s));
+        worst = fmax(worst, xefg_balance(s));
         printf("    event %d at step %ld: (%.17g, %.17g), %.3g h off the rule "
                "of its cell, which held %d points before, the nearest %.3g h "
                "from it; nearest Gauss point now %.3g h\n", g->nevent, s->step,
@@ -322,7 +313,7 @@ static void tip_on_a_gauss_point(void **state)
     for (int i = 0; i < l->n; i++)
         diag = fmax(diag, fabs(l->x[i] - l->y[i]));
     int ok = all_finite(x);
-    worst = fmax(worst, balance(s));
+    worst = fmax(worst, xefg_balance(s));
     printf("    %d events, %d into an uncut cell, %d onto a point it held; "
            "largest distance off the rule %.3g h; nearest Gauss point to a "
            "tip %.3g h; largest |x - y| of the crack %.3g h; fields %s; "

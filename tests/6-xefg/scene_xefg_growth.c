@@ -85,6 +85,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "balance.h"
 #include "cohesive.h"
 #include "cracks.h"
 #include "growth.h"
@@ -93,18 +94,6 @@
 #define SCENE "tests/6-xefg/scenes/growth_bar.cfg"
 #define BEAM "tests/6-xefg/scenes/growth_beam.cfg"
 
-/** The energy balance error over the energy in: start + held work =
- *  kinetic + strain + cohesive stored + dissipated + what the damping
- *  took out (Xefg::w_damped, as cohesive_energy_terms() counts it). */
-static double balance(const Sim *s)
-{
-    const Xefg *x = xefg_of(s);
-    double in = x->e0 + x->w_held;
-    double err = in - xefg_kinetic_energy(x) - xefg_strain_energy(x, s) -
-                 cohesive_stored_energy(x->coh) -
-                 cohesive_dissipated_energy(x->coh) - x->w_damped;
-    return fabs(err) / in;
-}
 
 /** The test's own sigma_1 of the stress averaged over the half disk of
  *  radius @p r ahead of the tip at end @p e of crack 0 (-inf: no tip). */
@@ -176,13 +165,13 @@ static void watch(Sim *s, double xline, Seen *v)
             v->late += !(ev->sigma1 >= L->f_t);
             v->before_max = fmax(v->before_max, before / L->f_t);
             fresh_step = s->step;
-            v->worst = fmax(v->worst, balance(s));
+            v->worst = fmax(v->worst, xefg_balance(s));
             printf("    event %d at step %ld (t = %.5f ms): (%.4f, %.4f) -> "
                    "(%.4f, %.4f), sigma_1 %.5f MPa (%.5f the step before%s); "
                    "%d parameters, %d Gauss points, %d cohesive points; "
                    "balance error %.2e\n", v->events, s->step, s->t, ev->x0,
                    ev->y0, ev->x1, ev->y1, ev->sigma1, before,
-                   was_fresh ? ", a tip made then" : "", x->ndof, x->ngauss, x->coh->npt, balance(s));
+                   was_fresh ? ", a tip made then" : "", x->ndof, x->ngauss, x->coh->npt, xefg_balance(s));
         }
         if (g->nevent > n0) {             /* follow the new points' traction */
             follow = s->step + 20;
@@ -204,10 +193,10 @@ static void watch(Sim *s, double xline, Seen *v)
                    d, cohesive_delta0(&C->set[0].law));
         }
         through = !x->crack[0].tip[0] && !x->crack[0].tip[1];
-        if (s->step % 100 == 0 && balance(s) > v->worst)
-            v->worst = balance(s), v->t_worst = s->t;
+        if (s->step % 100 == 0 && xefg_balance(s) > v->worst)
+            v->worst = xefg_balance(s), v->t_worst = s->t;
     }
-    v->worst = fmax(v->worst, balance(s));
+    v->worst = fmax(v->worst, xefg_balance(s));
     const CrackLine *l = &x->crack[0];
     for (int i = 0; i < l->n; i++)
         v->xdev = fmax(v->xdev, fabs(l->x[i] - xline));
@@ -444,7 +433,7 @@ static void tip_at_end_zero(void **state)
         tk_steps(s, 1);
         events += x->grow->nevent > n0;
         if (s->step % 100 == 0 || x->grow->nevent > n0)
-            worst = fmax(worst, balance(s));
+            worst = fmax(worst, xefg_balance(s));
     }
     const CrackLine *l = &x->crack[0];
     double xdev = 0.0;
@@ -483,7 +472,7 @@ static void both_tips_grow(void **state)
         for (int i = n0; i < x->grow->nevent; i++)
             ends[x->grow->event[i].end]++;
         if (s->step % 100 == 0 || x->grow->nevent > n0)
-            worst = fmax(worst, balance(s));
+            worst = fmax(worst, xefg_balance(s));
     }
     const CrackLine *l = &x->crack[0];
     double xdev = 0.0;
@@ -545,7 +534,7 @@ static void two_tips_meeting(void **state)
     printf("  two tips meeting: rc %d at step %ld (t = %g ms), crack 0's last "
            "event at step %ld; %d + %d events; crack 0 up to y = %g, crack 1 "
            "down to y = %g; balance error %.2e\n    \"%s = %g\"\n", rc,
-           s->fail.step, s->t, last0, n[0], n[1], hi0, lo1, balance(s), q,
+           s->fail.step, s->t, last0, n[0], n[1], hi0, lo1, xefg_balance(s), q,
            s->fail.value);
     TkBounds b = {0, 0};
     tk_bound(&b, 4, rc != 0 && s->fail.quantity, "the run did not stop");
@@ -558,7 +547,7 @@ static void two_tips_meeting(void **state)
              "(%d and %d)", n[0], n[1]);
     tk_bound(&b, 4, fabs(hi0 - 3.5) <= 1e-9 && lo1 >= 3.5 + 0.5 - 1e-9,
              "crack 0 to %g, crack 1 to %g", hi0, lo1);
-    tk_bound(&b, 4, balance(s) <= 0.01, "balance off by %.3g", balance(s));
+    tk_bound(&b, 4, xefg_balance(s) <= 0.01, "balance off by %.3g", xefg_balance(s));
     tk_bounds_finish(&b);
     tk_free(s);
 }
@@ -589,7 +578,7 @@ static void speed_limit_waits(void **state)
         int n0 = g->nevent;
         tk_steps(s, 1);
         if (s->step % 100 == 0 || g->nevent > n0)
-            worst = fmax(worst, balance(s));
+            worst = fmax(worst, xefg_balance(s));
     }
     for (int e = 1; e < g->nevent; e++)
         gap = fmin(gap, g->event[e].t - g->event[e - 1].t);
