@@ -78,7 +78,8 @@
  *   (y = 6, no tip left); within 0.05 h of x = 6; balance within 1 %.
  * - path_in_the_outputs: the program's last cracks_NNNNN.csv of the bar
  *   run to the edge holds the 2 + 7 points of the grown crack, the last
- *   at y = 6.
+ *   at y = 6; its cracks_NNNNN.vtp the same 9 points in one line, the
+ *   last at (6, 6), and cracks.pvd names that file.
  */
 #include <math.h>
 #include <stdio.h>
@@ -637,6 +638,32 @@ static void path_in_the_outputs(void **state)
     printf("  %s: %d points, the last at y = %g\n", path, points, y);
     assert_int_equal(points, 9);
     assert_true(fabs(y - 6.0) < 1e-9);
+    free(text);
+    /* ParaView's: the same path in the last cracks_NNNNN.vtp, one line of
+     * 9 points whose last is (6, 6), and the series names that file */
+    snprintf(path, sizeof path, "build/test-xefg-growth/cracks_%05d.vtp", last);
+    text = tk_slurp(path, NULL);
+    char *piece = strstr(text, "NumberOfPoints=\"");
+    int np = 0, nl = 0;
+    assert_non_null(piece);
+    assert_int_equal(sscanf(piece, "NumberOfPoints=\"%d\" NumberOfLines=\"%d\"",
+                            &np, &nl), 2);
+    char *pts = strstr(piece, "format=\"ascii\">");
+    assert_non_null(pts);
+    pts += strlen("format=\"ascii\">");
+    double vx = NAN, vy = NAN, vz;
+    for (int k = 0; k < np && pts; k++) {      /* one point a line */
+        assert_int_equal(sscanf(pts, " %lf %lf %lf", &vx, &vy, &vz), 3);
+        pts = strchr(pts + 1, '\n');
+    }
+    printf("  %s: %d points in %d line, the last (%g, %g)\n", path, np, nl, vx, vy);
+    assert_int_equal(np, 9);
+    assert_int_equal(nl, 1);
+    assert_true(fabs(vx - 6.0) < 1e-9 && fabs(vy - 6.0) < 1e-9);
+    free(text);
+    text = tk_slurp("build/test-xefg-growth/cracks.pvd", NULL);
+    snprintf(path, sizeof path, "file=\"cracks_%05d.vtp\"", last);
+    assert_non_null(strstr(text, path));
     free(text);
 }
 
