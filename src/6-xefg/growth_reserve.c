@@ -143,9 +143,9 @@ static const Material *tip_material(const Xefg *x, const Sim *sim, int k,
 
 /** The averaging radius, the elastic tangent and the bulk's softening
  *  modulus at each end of crack @p k (XefgGrowthSettings); -1 with a
- *  message where the band of width h softens faster than the elastic
- *  modulus (a snap-back: the Rankine tangent's stability test no longer
- *  holds, acoustic_tensor.h). */
+ *  message where, under criterion = "average", the band of width h
+ *  softens faster than the elastic modulus (a snap-back: the Rankine
+ *  tangent's stability test no longer holds, acoustic_tensor.h). */
 static int tip_laws(Growth *g, const Xefg *x, const Sim *sim, int k,
                     double h, char *err, size_t errlen)
 {
@@ -162,7 +162,7 @@ static int tip_laws(Growth *g, const Xefg *x, const Sim *sim, int k,
                                  : growth_default_radius(h, Ep, L);
         acoustic_elastic_tangent(m->E, m->nu, plane, set->tangent[e]);
         double h0 = set->tangent[e][0][0];         /* m : C : m, isotropic */
-        if (!(set->softening > -h0)) {
+        if (!set->tip && !(set->softening > -h0)) {  /* "tip" asks no tangent */
             char at[SCENE_AT_LEN];
             snprintf(err, errlen, "%s: growth: the bulk's softening over a "
                      "node spacing, h |dt / d delta| of the law = %g, is "
