@@ -95,6 +95,7 @@ static const char *const elsewhere[][2] = {
     {"tests/6-xefg/scenes/dcb_hoop.cfg", "cracks.cohesive.growth is stage 6's"},
     {"tests/6-xefg/scenes/kalthoff_coarse.cfg", "cracks.cohesive.growth is stage 6's"},
     {"tests/6-xefg/scenes/kalthoff_h1_667.cfg", "cracks.cohesive.growth is stage 6's"},
+    {"tests/6-xefg/scenes/growth_diagonal.cfg", "cracks.cohesive.growth is stage 6's"},
     {"figures/fig-kalthoff/kalthoff_h2_5.cfg", "cracks.cohesive.growth is stage 6's"},
     {"tests/7-fracture/scenes/dcb_j.cfg", "cracks.j_integral is stage 7's"},
     {"tests/7-fracture/scenes/dcb_growth.cfg", "cracks.growth is stage 7's"},
