@@ -19,14 +19,18 @@
  * mm/ms from 0.5 sqrt 2 mm apart, radius 0.2 mm, so the disks touch at
  * t = (0.5 sqrt 2 - 0.4) / (0.2 sqrt 2) = 1.086 ms; the first contact must
  * come no earlier than half a cell (0.025 mm) of closing before that,
- * 0.998 ms (the gap test: contact at 1.000 ms; approach alone fired at
- * 0.630 ms, when the disks first shared a node, 1.5 cells apart). And
- * the energy (issue 25's bound for Sulsky's disks): with MUSL, the
- * scene's scheme, the total energy at the end within 0.5 % of its start at
- * cfl 0.05 and closer than at cfl 0.1 (measured -0.58 % and -0.27 %);
- * with USAVG, where the build has it (stage 5), within 0.5 % at both
- * steps and closer at 0.05. USF's is printed (+1.16 % and +0.45 %: USF
- * gains, chapter 5).
+ * 0.998 ms (the gap test: contact at 1.009 ms at cfl 0.1, 1.004 at 0.05;
+ * approach alone fired at 0.630 ms, when the disks first shared a node,
+ * 1.5 cells apart). And the energy (issue 25's bound for Sulsky's disks,
+ * below 0.5 % and falling with the step): with MUSL and USF the total
+ * energy at the end within 0.5 % of its start at cfl 0.05 and closer than
+ * at cfl 0.1 (measured MUSL -0.58 % and -0.27 %, USF +1.16 % and
+ * +0.45 %); with USAVG, where the build has it (stage 5), within 0.5 % at
+ * both steps and closer at 0.05 (+0.14 %, +0.06 %). Whose error the cfl
+ * 0.1 rows are is printed beside them: chapter 1's disks (one velocity
+ * field, no contact, the same cells and points) run to their 3.5 ms (they
+ * leave chapter 1's grid before 4 ms) at the same cfl under the same
+ * scheme.
  * Contact is decided at Task 2 on the gap the step would end with, as at
  * Task 4: deciding it at Task 2 on the gap at the step's start left the
  * whole meeting to Task 4, whose change the points receive, and MUSL
@@ -120,7 +124,8 @@ static DisksRun collide(const char *scheme, const char *cfl, const char *extra)
     return r;
 }
 
-/** Chapter 1's single-field rebound, for comparison (restitution only). */
+/** Chapter 1's single-field rebound (at its cfl, 0.2, to 3.5 ms), for
+ *  comparison. */
 static double one_field(const char *scheme)
 {
     char ov[64];
@@ -134,14 +139,32 @@ static double one_field(const char *scheme)
     return e;
 }
 
+/** The energy change of chapter 1's disks (one field) under @p scheme at
+ *  cfl @p cfl, run to that scene's 3.5 ms: the scheme's own error on these
+ *  cells and points, without contact. */
+static double one_field_energy(const char *scheme, const char *cfl)
+{
+    char ov[2][64];
+    snprintf(ov[0], sizeof ov[0], "run.update=%s", scheme);
+    snprintf(ov[1], sizeof ov[1], "run.cfl=%s", cfl);
+    const char *const overrides[] = {ov[0], ov[1], NULL};
+    Sim *sim = tk_load_file("tests/1-mpm/scenes/disks.cfg", overrides);
+    Totals t0 = sim_totals(sim);
+    tk_steps(sim, sim->nsteps);
+    Totals t = sim_totals(sim);
+    tk_free(sim);
+    return (t.kinetic + t.strain) / (t0.kinetic + t0.strain) - 1;
+}
+
 /** Runs at cfl 0.1 and 0.05; @p bounded 1: within 0.5 % at 0.05 and closer
  *  than at 0.1; 2: and within 0.5 % at 0.1 too; 0: printed. */
 static void frictionless(const char *scheme, int bounded)
 {
     DisksRun a = collide(scheme, "0.1", NULL), b = collide(scheme, "0.05", NULL);
     printf("  %-4s energy change at cfl 0.1 %+.2f %%, at 0.05 %+.2f %%; chapter 1's "
-           "single field: restitution %.4f\n", scheme, 100 * a.gain, 100 * b.gain,
-           one_field(scheme));
+           "single field: restitution %.4f, energy at cfl 0.1 %+.2f %%\n", scheme,
+           100 * a.gain, 100 * b.gain, one_field(scheme),
+           100 * one_field_energy(scheme, "0.1"));
     if (bounded) {
         assert_true(fabs(b.gain) <= 0.005);
         assert_true(fabs(b.gain) < fabs(a.gain));
@@ -159,7 +182,7 @@ static void volume_test(void **state)
     (void)state;
     collide("musl", "0.1", "contact.[0].V_sep=0.9");
 }
-static void usf(void **state) { (void)state; frictionless("usf", 0); }
+static void usf(void **state) { (void)state; frictionless("usf", 1); }
 
 /** USAVG, stage 5's scheme: the issue's bound at both steps. */
 static void usavg(void **state)
