@@ -22,10 +22,11 @@
  * E/E0 stays within +-0.18 % of its mean over the run (the paper's band;
  * bounds fixed before the run), its max |E/E0 - 1| is the smallest of
  * the three, and its band is a time-step error: at cfl 0.1 at most 0.6
- * of its band at cfl 0.2 (first order would give 0.5). Measured when
- * written (history.csv's records): USAVG +-0.114 % at cfl 0.1 and +-0.280 %
- * at 0.2 (ratio 0.41); max |E/E0 - 1| USAVG 0.22 %, MUSL 0.79 %, USF
- * 2.87 %. With the paper's volume rule (V_sep 0.9, V_contact 1.1, the
+ * of its band at cfl 0.2 (first order would give 0.5). Measured (every
+ * step; chapter 5 quotes these lines): USAVG +-0.133 % at cfl 0.1 and
+ * +-0.581 % at 0.2 (ratio 0.230); max |E/E0 - 1| USAVG 0.206 %, MUSL
+ * 0.787 %, USF 3.705 %. (Before USF's stress saw the last step's contact
+ * decision, issue 25: +-0.122 % and +-0.331 %.) With the paper's volume rule (V_sep 0.9, V_contact 1.1, the
  * scene before issue 25's gap rule) USAVG's band was +-0.62 % and did not
  * shrink with the step (1.05 % max dev at cfl 0.2, 0.94 % at 0.1): this
  * test fails on that scene.
