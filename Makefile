@@ -69,40 +69,61 @@ tests_of = $(sort $(wildcard tests/$(1)-*/test_*.c tests/$(1)-*/scene_*.c) \
              $(foreach d,$(call upto,$(TEST_DIRS),$(1)),$(patsubst %,$(d)/%.c,$(call listed,$(d)/later_stages))) \
              $(foreach d,$(wildcard tests/$(1)-*),$(patsubst %,tests/%.c,$(call listed,$(d)/also))))
 
+# Objects are compiled once and shared by every stage that links them: a
+# file of folder src/K-* (or tests/K-*) is compiled with the include paths
+# of stages 1..K only, so a stage-K file that reached for a later stage's
+# header still does not compile, and since only stages.c is compiled with
+# -DMPM_STAGE=N, the object is the same bytes in every stage (stages 1-8
+# once had eight copies of each; cmp found them identical). The base floor
+# is compiled as stage 1 compiles it (main.c runs a Sim). stages.o is each
+# stage's own. Objects: build/shared/ (build/asan/shared/, build/tsan/shared/).
+# $(1) = release | asan | tsan
+V_release := build/shared
+V_asan := build/asan/shared
+V_tsan := build/tsan/shared
+folder_stage = $(or $(if $(filter fuzz,$(1)),$(LAST)),$(filter 1 2 3 4 5 6 7 8 9,$(call stage_num,$(1))),1)
+
+# $(1) = release | asan | tsan, $(2) = a folder of src/ or tests/
+define FOLDER_RULES
+$$(V_$(1))/$(patsubst src/%,obj/%,$(2))/%.o: $(2)/%.c
+	@mkdir -p $$(@D)
+	$$(CC_$(1)) $$(CFLAGS_$(1)) $$(addprefix -I,$$(call dirs_upto,$$(call folder_stage,$(notdir $(2))))) \
+	    $(if $(filter tests/%,$(2)),-Itests/support) -MMD -MP -c $$< -o $$@
+-include $$(wildcard $$(V_$(1))/$(patsubst src/%,obj/%,$(2))/*.d)
+endef
+# tests/support is compiled as stage 1 compiles it; tests/fuzz as the last
+# stage does (it loads any scene with that build)
+SHARED_DIRS := $(BASE_DIR) $(STAGE_DIRS) $(TEST_DIRS) tests/support tests/fuzz
+$(foreach v,release asan tsan,$(foreach d,$(SHARED_DIRS),$(eval $(call FOLDER_RULES,$(v),$(d)))))
+
 # $(1) = release | asan | tsan, $(2) = stage number
 define STAGE_RULES
 B_$(1)_$(2) := build/$(if $(filter-out release,$(1)),$(1)/)stage$(2)
 INC_$(1)_$(2) := $$(addprefix -I,$$(call dirs_upto,$(2)))
-OBJ_$(1)_$(2) := $$(patsubst src/%.c,$$(B_$(1)_$(2))/obj/%.o,\
-                   $$(foreach d,$$(call dirs_upto,$(2)),$$(wildcard $$(d)/*.c)))
+SRC_$(2) := $$(foreach d,$$(call dirs_upto,$(2)),$$(wildcard $$(d)/*.c))
+OBJ_$(1)_$(2) := $$(patsubst src/%.c,$$(V_$(1))/obj/%.o,$$(filter-out %/stages.c,$$(SRC_$(2)))) \
+                 $$(B_$(1)_$(2))/obj/0-base/stages.o
 UNIT_$(1)_$(2) := $$(call named,test_%,$$(call tests_of,$(2)))
 SCENE_$(1)_$(2) := $$(if $$(filter release,$(1)),$$(call named,scene_%,$$(call tests_of,$(2))))
-SUPPORT_$(1)_$(2) := $$(patsubst tests/support/%.c,$$(B_$(1)_$(2))/tests/support/%.o,$$(wildcard tests/support/*.c))
+SUPPORT_$(1) := $$(patsubst tests/support/%.c,$$(V_$(1))/tests/support/%.o,$$(wildcard tests/support/*.c))
 TESTS_$(1)_$(2) := $$(patsubst tests/%.c,$$(B_$(1)_$(2))/tests/%,$$(UNIT_$(1)_$(2)) $$(SCENE_$(1)_$(2)))
 
-$$(B_$(1)_$(2))/obj/%.o: src/%.c
+$$(B_$(1)_$(2))/obj/0-base/stages.o: src/0-base/stages.c
 	@mkdir -p $$(@D)
-	$$(CC_$(1)) $$(CFLAGS_$(1)) $$(if $$(filter %/stages.c,$$<),-DMPM_STAGE=$(2)) $$(INC_$(1)_$(2)) -MMD -MP -c $$< -o $$@
+	$$(CC_$(1)) $$(CFLAGS_$(1)) -DMPM_STAGE=$(2) $$(INC_$(1)_$(2)) -MMD -MP -c $$< -o $$@
 
 $$(B_$(1)_$(2))/libmpm.a: $$(filter-out %/main.o,$$(OBJ_$(1)_$(2)))
 	@rm -f $$@
 	ar rcs $$@ $$^
 
-$$(B_$(1)_$(2))/mpm: $$(B_$(1)_$(2))/obj/0-base/main.o $$(B_$(1)_$(2))/libmpm.a
+$$(B_$(1)_$(2))/mpm: $$(V_$(1))/obj/0-base/main.o $$(B_$(1)_$(2))/libmpm.a
 	$$(CC_$(1)) $$(LDFLAGS_$(1)) $$^ $$(call stage_libs,$(2)) -o $$@
 
-$$(B_$(1)_$(2))/tests/support/%.o: tests/support/%.c
+$$(B_$(1)_$(2))/tests/%: $$(V_$(1))/tests/%.o $$(SUPPORT_$(1)) $$(B_$(1)_$(2))/libmpm.a
 	@mkdir -p $$(@D)
-	$$(CC_$(1)) $$(CFLAGS_$(1)) $$(INC_$(1)_$(2)) -Itests/support -MMD -MP -c $$< -o $$@
-
-$$(B_$(1)_$(2))/tests/%.o: tests/%.c
-	@mkdir -p $$(@D)
-	$$(CC_$(1)) $$(CFLAGS_$(1)) $$(INC_$(1)_$(2)) -Itests/support -MMD -MP -c $$< -o $$@
-
-$$(B_$(1)_$(2))/tests/%: $$(B_$(1)_$(2))/tests/%.o $$(SUPPORT_$(1)_$(2)) $$(B_$(1)_$(2))/libmpm.a
 	$$(CC_$(1)) $$(LDFLAGS_$(1)) $$^ $$(TEST_LIBS) -o $$@
 
--include $$(OBJ_$(1)_$(2):.o=.d) $$(wildcard $$(B_$(1)_$(2))/tests/*/*.d)
+-include $$(wildcard $$(B_$(1)_$(2))/obj/0-base/stages.d)
 endef
 
 $(foreach s,$(STAGES),$(eval $(call STAGE_RULES,release,$(s))))
@@ -134,7 +155,7 @@ EXERCISE_CHECKS := $(foreach e,$(EXERCISES),$(call ex_tests,$(e),reference) $(ad
 # The stage's library less the object the exercise replaces, so that the
 # solution is the only definition of what it must define: a file that lacks
 # a function fails to link, naming it.
-ex_replaced = $(patsubst src/%.c,build/stage$(call ex_stage,$(1))/obj/%.o,$(shell cat exercises/$(1)/replaces))
+ex_replaced = $(patsubst src/%.c,$(V_release)/obj/%.o,$(shell cat exercises/$(1)/replaces))
 define EXERCISE_LIB
 build/exercises/$(1)/libmpm.a: $$(filter-out %/main.o $(call ex_replaced,$(1)),$$(OBJ_release_$(call ex_stage,$(1))))
 	@mkdir -p $$(@D)
@@ -150,8 +171,8 @@ build/exercises/$(1)/$(2)/solution.o: $(3) $(4)
 	@mkdir -p $$(@D)
 	$$(CC) $$(CFLAGS_release) $$(INC_release_$(call ex_stage,$(1))) -MMD -MP -c $$< -o $$@
 -include build/exercises/$(1)/$(2)/solution.d
-build/exercises/$(1)/$(2)/%: build/stage$(call ex_stage,$(1))/tests/$(firstword $(subst /, ,$(1)))/%.o \
-        build/exercises/$(1)/$(2)/solution.o $$(SUPPORT_release_$(call ex_stage,$(1))) \
+build/exercises/$(1)/$(2)/%: $(V_release)/tests/$(firstword $(subst /, ,$(1)))/%.o \
+        build/exercises/$(1)/$(2)/solution.o $$(SUPPORT_release) \
         build/exercises/$(1)/libmpm.a
 	$$(CC) $$^ $$(TEST_LIBS) -o $$@
 endef
@@ -185,7 +206,7 @@ FUZZ_JOBS ?= 2
 FUZZ_CC := clang
 FUZZ_SAN := -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all
 CFLAGS_fuzz := $(WARN) $(OMP) -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer-no-link $(FUZZ_SAN)
-FUZZ_OBJ := $(patsubst src/%.c,build/fuzz/obj/%.o,$(filter-out %/main.c,$(OBJ_release_$(LAST):build/stage$(LAST)/obj/%.o=src/%.c)))
+FUZZ_OBJ := $(patsubst src/%.c,build/fuzz/obj/%.o,$(filter-out %/main.c,$(SRC_$(LAST))))
 REPLAY := build/stage$(LAST)/tests/fuzz/replay build/asan/stage$(LAST)/tests/fuzz/replay
 
 build/fuzz/obj/%.o: src/%.c
@@ -202,8 +223,8 @@ build/fuzz/fuzz_scene: build/fuzz/fuzz_scene.o $(FUZZ_OBJ)
 -include $(FUZZ_OBJ:.o=.d) build/fuzz/fuzz_scene.d
 
 # the replay links the target's object besides its own
-build/stage$(LAST)/tests/fuzz/replay: build/stage$(LAST)/tests/fuzz/fuzz_scene.o
-build/asan/stage$(LAST)/tests/fuzz/replay: build/asan/stage$(LAST)/tests/fuzz/fuzz_scene.o
+build/stage$(LAST)/tests/fuzz/replay: $(V_release)/tests/fuzz/fuzz_scene.o
+build/asan/stage$(LAST)/tests/fuzz/replay: $(V_asan)/tests/fuzz/fuzz_scene.o
 
 fuzz:
 	@sh tools/deps.sh fuzz
@@ -216,6 +237,7 @@ fuzz:
 # programs run JOBS at a time (tools/run_tests.sh says how they keep apart).
 check: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) check-build
+	@rm -rf build/same-numbers-cache     # scene_same_numbers' copies: this run's own
 	@JOBS=$(JOBS) bash tools/run_tests.sh $(foreach s,$(STAGES),"stage$(s):build/stage$(s)/mpm:$(TESTS_release_$(s))" "asan-stage$(s):build/asan/stage$(s)/mpm:$(TESTS_asan_$(s))") \
 	    "fuzz replay::$(REPLAY)" \
 	    "exercises::$(EXERCISE_CHECKS)" \
