@@ -16,11 +16,13 @@
 # one line per run and "N passed, N failed"; exits non-zero on any
 # difference.
 #
-# IGNORE, a sed address regex (for example '^# t = [0-9]'), removes the
+# IGNORE, a sed address regex without '|' (for example '^# t = [0-9]'), removes the
 # lines it matches from every output file of both sides before the
 # comparison: for a span over which a known line was added to a file (the
 # grid CSVs' time line), so that the rest is still compared byte for byte.
-# The summary line says so.
+# The summary line says so. FILES, a list of output file names (for
+# example "history.csv particles_final.csv"), compares those alone (with
+# stdout and stderr): for a span over which the snapshots' times moved.
 set -u
 cd "$(dirname "$0")/.."
 STEPS=${STEPS:-60}
@@ -47,7 +49,7 @@ elif [ $# -eq 2 ]; then
     A=$1
     B=$2
 else
-    sed -n '2,23p' "$0"
+    sed -n '2,26p' "$0"
     exit 2
 fi
 
@@ -77,8 +79,13 @@ for s in $STAGES; do
                 echo "exit $?" >>"$out/stderr"
                 sed -i -e '/particle-steps\/s/d' -e '/^mpm: energy /d' -e 's/, [0-9]* threads*$//' \
                     -e "s#$out#OUT#g" "$out/stdout" "$out/stderr"
+                if [ -n "${FILES:-}" ]; then
+                    for f in "$out"/o/*; do
+                        [[ " $FILES " == *" ${f##*/} "* ]] || rm -rf "$f"
+                    done
+                fi
                 if [ -n "${IGNORE:-}" ]; then
-                    find "$out" -type f -exec sed -i "\\#${IGNORE}#d" {} +
+                    find "$out" -type f -exec sed -i "\\|${IGNORE}|d" {} +
                 fi
             done
             if [ "$(tail -1 "$WORK/A/stderr")" = "exit 1" ] &&
@@ -99,5 +106,6 @@ for s in $STAGES; do
     done
 done
 [ -n "${IGNORE:-}" ] && echo "(lines matching '$IGNORE' left out of every file)"
+[ -n "${FILES:-}" ] && echo "(of the outputs, $FILES alone compared)"
 echo "$passed passed, $failed failed ($new runs of scenes the base refuses)"
 [ $failed -eq 0 ] && [ $passed -gt 0 ]
