@@ -49,7 +49,7 @@ elif [ $# -eq 2 ]; then
     A=$1
     B=$2
 else
-    sed -n '2,26p' "$0"
+    sed -n '2,25p' "$0"
     exit 2
 fi
 
