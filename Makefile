@@ -328,7 +328,7 @@ FIG_OUT_fig-tip := fig-tip.png fig-tip.txt
 FIG_RUN_fig-tip := build/stage3/mpm build/stage3/tests/3-crossing/scene_tip_on_node
 FIG_USES_fig-tip := $(wildcard tests/3-crossing/scenes/tip_*.cfg)
 FIG_OUT_fig-tradeoff := fig-tradeoff-beam.png fig-tradeoff-dcb.png fig-tradeoff.txt
-FIG_RUN_fig-tradeoff := build/stage5/mpm build/stage5/libmpm.a build/stage5/tests/support/q4.o
+FIG_RUN_fig-tradeoff := build/stage5/mpm build/stage5/libmpm.a $(V_release)/tests/support/q4.o
 FIG_USES_fig-tradeoff := figures/fig6/beam_supports.cfg figures/fig1/dcb_full.cfg tests/support/q4.h
 FIG_OUT_fig-bars := fig-bars.png fig-bars.txt
 FIG_RUN_fig-bars := build/stage5/mpm build/stage5/tests/4-contact/scene_bars
@@ -339,7 +339,7 @@ FIG_USES_fig-slide := tests/4-contact/scenes/slide.cfg
 FIG_OUT_fig-xefg-k := fig-xefg-k.png fig-xefg-k.txt
 FIG_RUN_fig-xefg-k := build/stage6/tests/6-xefg/scene_edge_crack
 FIG_OUT_fig-xefg-dcb := fig-xefg-dcb.png fig-xefg-dcb.txt
-FIG_RUN_fig-xefg-dcb := build/stage6/mpm build/stage6/libmpm.a build/stage6/tests/support/q4.o
+FIG_RUN_fig-xefg-dcb := build/stage6/mpm build/stage6/libmpm.a $(V_release)/tests/support/q4.o
 FIG_USES_fig-xefg-dcb := figures/fig1/dcb_full.cfg tests/support/q4.h \
     $(addprefix figures/fig-tradeoff/,dcb_opening.c dcb_opening.sh dcb_scene.sh)
 FIG_OUT_fig-petersson := fig-petersson.png fig-petersson.txt
@@ -348,11 +348,11 @@ FIG_USES_fig-petersson := tests/6-xefg/scenes/petersson.cfg tests/6-xefg/scenes/
 FIG_OUT_fig-k-edge := fig-k-edge.png fig-k-edge.txt
 FIG_RUN_fig-k-edge := build/stage7/tests/7-fracture/scene_k_edge build/stage6/tests/6-xefg/scene_edge_crack
 FIG_OUT_fig-growth := fig-growth.png fig-growth.txt
-FIG_RUN_fig-growth := build/stage7/mpm build/stage7/tests/support/q4.o
+FIG_RUN_fig-growth := build/stage7/mpm $(V_release)/tests/support/q4.o
 FIG_USES_fig-growth := tests/7-fracture/scenes/kalthoff_half.cfg tests/support/q4.h
 FIG_OUT_fig-shapes := fig-shapes.png fig-shapes.txt
 FIG_RUN_fig-shapes := build/stage8/mpm build/stage8/tests/8-shapes/scene_bar_crossing \
-    build/stage8/libmpm.a build/stage8/tests/support/q4.o
+    build/stage8/libmpm.a $(V_release)/tests/support/q4.o
 FIG_USES_fig-shapes := tests/8-shapes/scenes/bar_crossing.cfg tests/1-mpm/scenes/spinning_disk.cfg \
     tools/task1_cost.sh figures/fig1/dcb_full.cfg figures/fig6/beam_supports.cfg tests/support/q4.h \
     $(addprefix figures/fig-tradeoff/,dcb_opening.c dcb_opening.sh dcb_scene.sh)

@@ -83,11 +83,11 @@ t_start=$(fig_now)
 load0=$(fig_load)
 
 fig_mpm 7
-fig_build build/stage7/tests/support/q4.o
+fig_build build/shared/tests/support/q4.o
 FEA=$RUNS/dcb_fea
 cc -std=c11 -Wall -Wextra -Werror -Wshadow -Wmissing-prototypes -Wundef \
     -D_POSIX_C_SOURCE=200809L -O2 -Itests/support figures/fig-growth/dcb_fea.c \
-    build/stage7/tests/support/q4.o -llapacke -lm -o "$FEA" || exit 1
+    build/shared/tests/support/q4.o -llapacke -lm -o "$FEA" || exit 1
 
 # ---- the runs, JOBS at a time ----------------------------------------------
 # fig_job NAME SCENE [OVERRIDE...]: runs $MPM in the background into

@@ -5,8 +5,8 @@
 # scenes load) both call it.
 set -u
 n=$1 out=$2
-make --no-print-directory build/stage$n/libmpm.a build/stage$n/tests/support/q4.o >/dev/null || exit 1
+make --no-print-directory build/stage$n/libmpm.a build/shared/tests/support/q4.o >/dev/null || exit 1
 cc -std=c11 -Wall -Wextra -Werror -Wshadow -Wmissing-prototypes -Wundef \
     -D_POSIX_C_SOURCE=200809L -O2 $(printf -- '-I%s ' $(ls -d src/[0-9]-* | awk -F/ -v n="$n" '$2 + 0 <= n')) \
-    -Itests/support figures/fig-tradeoff/dcb_opening.c build/stage$n/tests/support/q4.o \
+    -Itests/support figures/fig-tradeoff/dcb_opening.c build/shared/tests/support/q4.o \
     build/stage$n/libmpm.a -llapacke -lconfig -lm -fopenmp -o "$out"
