@@ -237,11 +237,18 @@ fuzz:
 # programs run JOBS at a time (tools/run_tests.sh says how they keep apart).
 check: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) check-build
+	@$(MAKE) -n --no-print-directory $(RESOLVED) >/dev/null || \
+	    { echo "make check: make -n $(RESOLVED) fails: a target names a file no rule makes"; exit 1; }
 	@rm -rf build/same-numbers-cache     # scene_same_numbers' copies: this run's own
 	@JOBS=$(JOBS) bash tools/run_tests.sh $(foreach s,$(STAGES),"stage$(s):build/stage$(s)/mpm:$(TESTS_release_$(s))" "asan-stage$(s):build/asan/stage$(s)/mpm:$(TESTS_asan_$(s))") \
 	    "fuzz replay::$(REPLAY)" \
 	    "exercises::$(EXERCISE_CHECKS)" \
 	    "empty solutions::$(foreach e,$(EXERCISES),$(addprefix ?,$(call ex_tests,$(e),empty)))"
+
+# the targets make check does not run, resolved by make -n: in a fresh clone
+# (CI) a prerequisite that no rule makes stops them (as a moved object once
+# stopped make docs)
+RESOLVED := figures docs bench tsan fuzz same-numbers
 
 check-build: $(foreach s,$(STAGES),build/stage$(s)/mpm $(TESTS_release_$(s)) build/asan/stage$(s)/mpm $(TESTS_asan_$(s))) \
              $(REPLAY) $(EXERCISE_BINS)
