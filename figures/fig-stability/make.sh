@@ -14,7 +14,8 @@
 # Each run is one of:
 #   stopped   exit status 3, "mpm: unstable at step N (t = X ms): particle P
 #             QUANTITY = V" on stderr (the time, step, point, its body and
-#             the quantity are recorded);
+#             the quantity are recorded), or "...: QUANTITY = V" for a sum:
+#             the energy guard (run.energy_limit, energy doubled);
 #   drifting  ran to the end with max |E/E0 - 1| > BOUND (E = kinetic +
 #             strain from history.csv, E0 its first row; default 1 %: five
 #             times the +-0.18 % of the paper's USAVG curve over 6 ms, and
@@ -129,8 +130,14 @@ run() {
             v=$(sed -nE 's/.* = ([^;]*); stopping.*/\1/p' <<<"$msg")
             b=$( [ "$p" -ge 0 ] 2>/dev/null && body_of "$n" "$p" || echo "-")
             note=$(awk -v t="$t" 'BEGIN { printf "%.2g", t }')
-            line=$(printf '%-5s %4s %3s  %-9s at %.4g ms, step %s: particle %s (%s) %s = %s  %6s s  %s' \
-                   "$s" "$c" "$n" "$class" "$t" "$step" "$p" "$b" "$q" "$v" "$secs" "$fin")
+            if [ -n "$p" ]; then
+                line=$(printf '%-5s %4s %3s  %-9s at %.4g ms, step %s: particle %s (%s) %s = %s  %6s s  %s' \
+                       "$s" "$c" "$n" "$class" "$t" "$step" "$p" "$b" "$q" "$v" "$secs" "$fin")
+            else                          # a sum: the energy guard, an overflow
+                q=$(sed -nE 's/.* ms\): (.*) = [^;]*; stopping.*/\1/p' <<<"$msg")
+                line=$(printf '%-5s %4s %3s  %-9s at %.4g ms, step %s: %s = %s  %6s s  %s' \
+                       "$s" "$c" "$n" "$class" "$t" "$step" "$q" "$v" "$secs" "$fin")
+            fi
             ;;
         1)
             class=refused

@@ -14,7 +14,7 @@ const char *const scene_grid_keys[] = {"origin", "cells", "cell_size", NULL};
 const char *const scene_run_keys[] = {"time", "cfl", "allow_cfl_above_one",
     "update", "method", "damping", "plane", "gravity", "gravity_ramp", "snapshots",
     "history_every", "stress_rate", "precision", "units", "checkpoint_every",
-    "output", "threads", "shape", NULL};
+    "output", "threads", "shape", "energy_limit", NULL};
 const char *const scene_material_keys[] = {"name", "law", "rho", NULL};
 const char *const scene_body_keys[] = {"name", "material", "thickness",
     "velocity", "angular_velocity", "velocity_gradient", "center", "stress",

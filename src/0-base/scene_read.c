@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "energy_guard.h"
 #include "scene_keys.h"
 #include "shape.h"
 #include "scene_text.h"
@@ -427,6 +428,8 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
         scene_number(r, g, "history_every", 0, 0, &hist) < 0 ||
         scene_number(r, g, "checkpoint_every", 0, 0, &ckpt) < 0 ||
         scene_number(r, g, "threads", 0, 0, &threads) < 0 ||
+        scene_number(r, g, "energy_limit", 0, ENERGY_LIMIT_DEFAULT,
+                     &run->energy_limit) < 0 ||
         scene_string(r, g, "update", 0, &update) < 0 ||
         scene_string(r, g, "method", 0, &method) < 0 ||
         scene_string(r, g, "plane", 0, &plane) < 0 ||
@@ -491,6 +494,12 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
     if (!(run->damping >= 0))
         return scene_error(r, config_setting_get_member(g, "damping"), "damping",
                            "%g must be >= 0", run->damping);
+    if (!(run->energy_limit == 0 || (run->energy_limit > 1 && isfinite(run->energy_limit))))
+        return scene_error(r, config_setting_get_member(g, "energy_limit"),
+                           "energy_limit", "%g: expected a finite factor above 1 "
+                           "(stop a closed scene whose energy passes that many "
+                           "times its start; default %g) or 0 (never)",
+                           run->energy_limit, ENERGY_LIMIT_DEFAULT);
     if (snaps < 0 || snaps != floor(snaps) || snaps > 100000)
         return scene_error(r, config_setting_get_member(g, "snapshots"), "snapshots",
                            "%g must be a whole number in [0, 100000]", snaps);
@@ -844,6 +853,22 @@ static int read_held_points(Sim *sim, SceneReader *r, const config_setting_t *ro
     return 0;
 }
 
+/** run.energy_limit, given for a scene that something does work on, is
+ *  a setting the guard cannot honour: refused (energy_guard.h). */
+static int check_energy_limit(Sim *sim, SceneReader *r, const config_setting_t *root)
+{
+    const config_setting_t *g = config_setting_get_member(root, "run");
+    const config_setting_t *e = g ? config_setting_get_member(g, "energy_limit") : NULL;
+    char why[64];
+    if (!e || sim->scene.run.energy_limit == 0 ||
+        !energy_guard_open(&sim->scene, why, sizeof why))
+        return 0;
+    return scene_error(r, e, "energy_limit", "%g: %s does work on this scene "
+                       "that the energy guard does not count, so it guards "
+                       "closed scenes only; leave energy_limit out or set 0",
+                       sim->scene.run.energy_limit, why);
+}
+
 int scene_read(Sim *sim, const config_t *cfg, SceneReader *r)
 {
     const config_setting_t *root = config_root_setting(cfg);
@@ -866,7 +891,7 @@ int scene_read(Sim *sim, const config_t *cfg, SceneReader *r)
     if (read_grid(sim, r, root) || read_run(sim, r, root) ||
         read_materials(sim, r, root) || read_bodies(sim, r, root) ||
         read_boundaries(sim, r, root) || read_loads(sim, r, root) ||
-        read_held_points(sim, r, root))
+        read_held_points(sim, r, root) || check_energy_limit(sim, r, root))
         return -1;
     /* the stages' sections, in stage order */
     return scene_read_open_keys(sim, r, "", root, 0);

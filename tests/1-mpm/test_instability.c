@@ -29,16 +29,18 @@ static const char *const SCENE = "tests/1-mpm/scenes/usl_unstable.cfg";
 static const double XP = 1.0 / 32.0;
 static const double PI = 3.14159265358979323846;
 
-static Sim *load(const char *scheme)
+static Sim *load_at(const char *scheme, const char *cfl)
 {
     char ov[64];
     snprintf(ov, sizeof ov, "run.update=%s", scheme);
-    const char *const overrides[] = {ov, NULL};
+    const char *const overrides[] = {ov, cfl, NULL};
     Sim *sim = tk_load_file(SCENE, overrides);
     assert_int_equal(sim->pts.n, 1);
     assert_close(sim->pts.x[0], XP, 1e-15);
     return sim;
 }
+
+static Sim *load(const char *scheme) { return load_at(scheme, NULL); }
 
 /** sim_step() reports the failure with step, particle and quantity. */
 static void usl_stops(void **state)
@@ -182,7 +184,9 @@ static int check_pvd(const char *dir)
 }
 
 /** The program: exit 3, a message naming step, particle and quantity, and
- *  the output written so far readable. */
+ *  the output written so far readable. The energy guard is off here
+ *  (run.energy_limit=0): it would stop the run earlier, at the step of
+ *  energy_guard_stops_first() below. */
 static void program_exit_status(void **state)
 {
     (void)state;
@@ -200,7 +204,7 @@ static void program_exit_status(void **state)
     char dir[] = "/tmp/mpm_instability_XXXXXX";
     assert_non_null(mkdtemp(dir));
     char args[1024], out[4096];
-    snprintf(args, sizeof args, "%s -o %s/out", SCENE, dir);
+    snprintf(args, sizeof args, "%s -o %s/out run.energy_limit=0", SCENE, dir);
     int rc = tk_run_mpm(args, out, sizeof out);
     print_message("mpm said: %s", out);
     assert_int_equal(rc, 3);
@@ -243,6 +247,98 @@ static void overflowing_totals_stop_the_run(void **state)
     tk_free(sim);
 }
 
+/** The guard's runs: cfl 0.27, h = 0.0729, USL's eigenvalue
+ *  (tr - sqrt(tr^2 - 4 det)) / 2 = -1.30, so that its energy grows about
+ *  1.7-fold a step and a restart's energy differs from the start's. */
+#define GUARD_CFL "run.cfl=0.27"
+
+/** The first step after which USL's energy (kinetic + strain) passes
+ *  twice its start, stepping with sim_step() alone (no guard); @p ratio
+ *  gets E / E0 there, @p fail_step the step the point check stops at,
+ *  and @p high the step before it of the highest energy, @p e_high that
+ *  energy / E0. */
+static long doubling_step(const char *scheme, double *ratio, long *fail_step,
+                          long *high, double *e_high)
+{
+    Sim *sim = load_at(scheme, GUARD_CFL);
+    Totals t = sim_totals(sim);
+    double e0 = t.kinetic + t.strain;
+    long at = -1;
+    *fail_step = -1;
+    *high = 0;
+    *e_high = 1.0;
+    while (sim->step < sim->nsteps) {
+        if (sim_step(sim)) {
+            *fail_step = sim->fail.step;
+            break;
+        }
+        t = sim_totals(sim);
+        double e = (t.kinetic + t.strain) / e0;
+        if (at < 0 && e > 2.0) {
+            at = sim->step;
+            *ratio = e;
+        } else if (at < 0 && e > *e_high) {
+            *high = sim->step;
+            *e_high = e;
+        }
+    }
+    tk_free(sim);
+    return at;
+}
+
+/** The energy guard (run.energy_limit, default 2; the scene is closed:
+ *  its nodes are held at rest, nothing loads it): USL's energy grows
+ *  about 1.7-fold a step (GUARD_CFL), and the program stops at the
+ *  first history row (one a step here) whose energy passes twice the
+ *  start, with status 3, a message naming that step and the ratio, and
+ *  that row written; before the point check would (it needs the point
+ *  off the grid). A restart from a checkpoint taken before it stops at
+ *  the same step: the level is the start's, not the restart's. MUSL's
+ *  energy stays within E0 / (1 - sqrt(h) / 2) = 1.16 E0 (above): the
+ *  guard lets it run to the end. */
+static void energy_guard_stops_first(void **state)
+{
+    (void)state;
+    double ratio = 0, e_high;
+    long fail_step, high, at = doubling_step("usl", &ratio, &fail_step, &high, &e_high);
+    print_message("usl: energy passes 2 E0 after step %ld (E/E0 = %g); the "
+                  "point check stops at step %ld; restart after step %ld "
+                  "(E/E0 = %g)\n", at, ratio, fail_step, high, e_high);
+    assert_true(at >= 1 && at < fail_step);
+    assert_true(ratio > 2.0);
+    assert_true(high >= 1 && 2.0 * e_high > ratio);  /* a level of twice the
+                           restart's energy would let step `at` pass */
+
+    char dir[] = "/tmp/mpm_guard_XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    char args[1024], out[4096], expect[64];
+    snprintf(args, sizeof args, "%s -q -o %s/out run.snapshots=0 " GUARD_CFL, SCENE, dir);
+    assert_int_equal(tk_run_mpm(args, out, sizeof out), 3);
+    print_message("mpm said: %s", out);
+    snprintf(expect, sizeof expect, "unstable at step %ld ", at);
+    assert_non_null(strstr(out, expect));
+    assert_non_null(strstr(out, "run.energy_limit"));
+    const char *eq = strstr(out, "grow) = ");
+    assert_non_null(eq);
+    assert_close(strtod(eq + 8, NULL), ratio, 1e-5 * ratio);   /* %g: 6 digits */
+    char path[512];
+    snprintf(path, sizeof path, "%s/out/history.csv", dir);
+    assert_int_equal(check_history(path), at);      /* its row, then the stop */
+
+    snprintf(args, sizeof args, "%s -q -o %s/re run.snapshots=0 " GUARD_CFL " --stop-at %ld",
+             SCENE, dir, high);
+    tk_run_mpm_ok(args, out, sizeof out);
+    snprintf(args, sizeof args, "-q --restart %s/re", dir);
+    assert_int_equal(tk_run_mpm(args, out, sizeof out), 3);
+    assert_non_null(strstr(out, expect));
+
+    snprintf(args, sizeof args, "%s -q -o %s/musl run.snapshots=0 run.update=musl " GUARD_CFL,
+             SCENE, dir);
+    tk_run_mpm_ok(args, out, sizeof out);
+    snprintf(args, sizeof args, "rm -rf '%s'", dir);
+    assert_int_equal(system(args), 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -252,6 +348,7 @@ int main(void)
         cmocka_unit_test(usf_stable),
         cmocka_unit_test(program_exit_status),
         cmocka_unit_test(overflowing_totals_stop_the_run),
+        cmocka_unit_test(energy_guard_stops_first),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -15,9 +15,13 @@
  *   cell, first at 0.10 ms): the stop comes within a tenth of that after a
  *   crossing (0.6 % measured, at the second crossing; the first cost 3.7 %
  *   of the energy).
- * - the program on the same run: exit status 3, the message names that
- *   step, point and quantity, history.csv holds only finite numbers, and
- *   particles_final.csv is not written (only a run that ends writes it).
+ * - the program on the same run, the energy guard off: exit status 3,
+ *   the message names that step, point and quantity, history.csv holds
+ *   only finite numbers, and particles_final.csv is not written (only a
+ *   run that ends writes it). With the guard (the scene is closed: no
+ *   gravity, loads or moving holds) it stops no later, at the first
+ *   history row whose energy passes twice the first row's, the row
+ *   before it within twice.
  * - USAVG at cfl 0.1 runs the reduced time with max |E/E0 - 1| <= 1 %, the
  *   map's bound between stable and drifting, checked every step.
  * - cfl 1.2 is refused at input, naming the key and allow_cfl_above_one;
@@ -170,6 +174,33 @@ static long finite_rows(const char *path, long *last_step)
     return rows;
 }
 
+/** The total energy (column 5) of history.csv's first, last but one and
+ *  last rows; @return the last row's step. */
+static long history_energies(const char *path, double *first, double *before,
+                             double *last)
+{
+    char *text = tk_slurp(path, NULL), *save = NULL;
+    char *line = strtok_r(text, "\n", &save);          /* the header */
+    assert_non_null(line);
+    assert_true(strncmp(line, "step,time,kinetic,strain,total,", 31) == 0);
+    long rows = 0, step = -1;
+    *first = *before = *last = NAN;
+    while ((line = strtok_r(NULL, "\n", &save)) != NULL) {
+        double v[5];
+        char *c = line;
+        for (int k = 0; k < 5; k++, c++)
+            v[k] = strtod(c, &c);
+        step = (long)v[0];
+        *before = *last;
+        *last = v[4];
+        if (rows++ == 0)
+            *first = v[4];
+    }
+    free(text);
+    assert_true(rows >= 2);
+    return step;
+}
+
 static void usl_program_writes_no_nan(void **state)
 {
     (void)state;
@@ -178,7 +209,7 @@ static void usl_program_writes_no_nan(void **state)
     char dir[] = "/tmp/mpm_stability_XXXXXX", args[1024], out[4096], path[512];
     assert_non_null(mkdtemp(dir));
     snprintf(args, sizeof args, "%s -q -o %s/out run.update=usl run.cfl=0.1 "
-             "run.time=" TIME, SCENE, dir);
+             "run.time=" TIME " run.energy_limit=0", SCENE, dir);
     int rc = tk_run_mpm(args, out, sizeof out);
     print_message("mpm said: %s", out);
     assert_int_equal(rc, 3);
@@ -194,6 +225,22 @@ static void usl_program_writes_no_nan(void **state)
     struct stat st;
     snprintf(path, sizeof path, "%s/out/particles_final.csv", dir);
     assert_int_not_equal(stat(path, &st), 0);
+
+    snprintf(args, sizeof args, "%s -q -o %s/guard run.update=usl run.cfl=0.1 "
+             "run.time=" TIME, SCENE, dir);
+    assert_int_equal(tk_run_mpm(args, out, sizeof out), 3);
+    print_message("mpm said (the guard on): %s", out);
+    assert_non_null(strstr(out, "run.energy_limit"));
+    snprintf(path, sizeof path, "%s/guard/history.csv", dir);
+    double e_first, e_before, e_last;
+    last = history_energies(path, &e_first, &e_before, &e_last);
+    print_message("guard: stopped at the row of step %ld, E/E0 = %g (the row "
+                  "before: %g); the point check stops at step %ld\n", last,
+                  e_last / e_first, e_before / e_first, usl_fail.step);
+    snprintf(expect, sizeof expect, "unstable at step %ld (t = ", last);
+    assert_non_null(strstr(out, expect));
+    assert_true(last <= usl_fail.step);
+    assert_true(e_last > 2.0 * e_first && e_before <= 2.0 * e_first);
     snprintf(args, sizeof args, "rm -rf '%s'", dir);
     assert_int_equal(system(args), 0);
 }
