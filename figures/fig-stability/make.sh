@@ -186,6 +186,7 @@ summary=$OUT/fig-stability.txt
     echo "Stability map, stage 5: $SCENE to $TIME ms (reduced from 6),"
     echo "points per cell set on every body; one run at a time."
     echo "stopped: exit 3 with 'unstable at step N (t = X ms): particle P QUANTITY'"
+    echo "or the energy guard's 'energy ... = F' (F > 2: run.energy_limit)"
     echo "(cell: X ms); drifting: ran to the end with max |E/E0 - 1| > $BOUND; stable:"
     echo "within it (cell: max |E/E0 - 1|); refused: the scene refused (cfl > 1 without"
     echo "allow_cfl_above_one = true), then run with it set (cell: that outcome)."

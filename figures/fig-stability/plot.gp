@@ -22,7 +22,7 @@ set key below horizontal samplen 1.5 font ',10'
 set style fill solid 1.0 border lc rgb 'white'
 
 set multiplot layout 2,2 title sprintf("Beam impact with contact between bodies (figures/fig6/beam_supports.cfg), run to %s ms.\n\
-stable: max |E/E0 - 1| <= %g %% (written in the cell); drifting: above it; stopped: unstable, stopped with the step, point and quantity (its time in ms written).\n\
+stable: max |E/E0 - 1| <= %g %% (written in the cell); drifting: above it; stopped: unstable, stopped with the step and the point and quantity, or the energy past twice its start (its time in ms written).\n\
 cfl > 1 is refused at input; below 'refused': the same run with allow_cfl_above_one = true.", tend, 100 * bound) \
     font ',11'
 # the row of a ppc value
