@@ -62,8 +62,7 @@ typedef struct History {
     FILE *f;            /**< the open file */
     char *path;         /**< its name, for messages */
     long bytes;         /**< its length up to the last whole row */
-    double e_stop;      /**< the energy guard's level (INFINITY: none) */
-    double e_start;     /**< the start's energy it is a multiple of */
+    EnergyGuard guard;  /**< the energy guard (energy_guard.h) */
 } History;
 
 static int history_flush(History *h)
@@ -81,8 +80,8 @@ static int history_flush(History *h)
 
 /** Append a row; -1 when it cannot be written, -3 when the totals it
  *  holds are not finite though every point is (sums that overflow), or
- *  when a closed scene's energy passed the guard's level (its row is
- *  written first: the file shows the growth). */
+ *  when the energy passed the guard's level (its row is written first:
+ *  the file shows the growth). */
 static int history_row(Sim *sim, History *h)
 {
     Totals t = output_history_row(sim, h->f);
@@ -92,12 +91,8 @@ static int history_row(Sim *sim, History *h)
                        !isfinite(t.strain) ? "total strain energy" :
                        !isfinite(t.px) ? "total momentum x" :
                        !isfinite(t.py) ? "total momentum y" : NULL;
-    if (!what && t.kinetic + t.strain > h->e_stop) {
-        step_fail(sim, -1, "energy (kinetic + strain) / its start, above "
-                  "run.energy_limit (a closed scene's energy cannot grow)",
-                  (t.kinetic + t.strain) / h->e_start);
+    if (!what && energy_guard_passed(sim, &h->guard, t.kinetic + t.strain))
         return -3;
-    }
     if (!what)
         return 0;
     double v = !isfinite(t.kinetic) ? t.kinetic : !isfinite(t.strain) ? t.strain :
@@ -246,8 +241,8 @@ int sim_run(Sim *sim, const char *outdir, const RunOptions *opt)
 {
     const RunSettings *run = &sim->scene.run;
     RunProgress rp = {0, 1, -1, NULL, run->snapshots + 2, 0};
-    History h = {NULL, NULL, 0, INFINITY, 0};
-    h.e_stop = energy_guard_level(sim, &h.e_start);  /* before a restart's state */
+    History h = {NULL, NULL, 0, energy_guard_start(sim)};  /* before a
+                                                   restart's state is read */
     rp.times = malloc(sizeof(double) * (size_t)rp.cap);
     if (!rp.times || output_make_dir(outdir)) {
         free(rp.times);

@@ -15,6 +15,7 @@
 #include "checkpoint.h"
 #include "scene_include.h"
 #include "footprint.h"
+#include "energy_guard.h"
 #include "method_check.h"
 #include "scene_read.h"
 #include "setup.h"
@@ -62,7 +63,8 @@ static int load_config(Sim *sim, config_t *cfg, const char *name, char *err,
     if (setup_points(sim, err, errlen) || setup_grid(sim, err, errlen) ||
         setup_loads(sim, err, errlen) || setup_held_points(sim, err, errlen) ||
         setup_check_totals(sim, err, errlen) || prepare_stages(sim, name, err, errlen) ||
-        method_check_scene(sim, cfg, &r))       /* all subscribers are in */
+        method_check_scene(sim, cfg, &r) ||     /* all subscribers are in */
+        energy_guard_check(sim, cfg, &r))
         return -1;
     sim->bodyke = calloc((size_t)sim->scene.nbodies, sizeof(double));
     if (!sim->bodyke) {

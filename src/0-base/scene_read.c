@@ -853,22 +853,6 @@ static int read_held_points(Sim *sim, SceneReader *r, const config_setting_t *ro
     return 0;
 }
 
-/** run.energy_limit, given for a scene that something does work on, is
- *  a setting the guard cannot honour: refused (energy_guard.h). */
-static int check_energy_limit(Sim *sim, SceneReader *r, const config_setting_t *root)
-{
-    const config_setting_t *g = config_setting_get_member(root, "run");
-    const config_setting_t *e = g ? config_setting_get_member(g, "energy_limit") : NULL;
-    char why[64];
-    if (!e || sim->scene.run.energy_limit == 0 ||
-        !energy_guard_open(&sim->scene, why, sizeof why))
-        return 0;
-    return scene_error(r, e, "energy_limit", "%g: %s does work on this scene "
-                       "that the energy guard does not count, so it guards "
-                       "closed scenes only; leave energy_limit out or set 0",
-                       sim->scene.run.energy_limit, why);
-}
-
 int scene_read(Sim *sim, const config_t *cfg, SceneReader *r)
 {
     const config_setting_t *root = config_root_setting(cfg);
@@ -891,7 +875,7 @@ int scene_read(Sim *sim, const config_t *cfg, SceneReader *r)
     if (read_grid(sim, r, root) || read_run(sim, r, root) ||
         read_materials(sim, r, root) || read_bodies(sim, r, root) ||
         read_boundaries(sim, r, root) || read_loads(sim, r, root) ||
-        read_held_points(sim, r, root) || check_energy_limit(sim, r, root))
+        read_held_points(sim, r, root))
         return -1;
     /* the stages' sections, in stage order */
     return scene_read_open_keys(sim, r, "", root, 0);

@@ -206,6 +206,12 @@ int hooks_on_energy(Hooks *h, EnergyHook fn, void *state)
     return subscribe(h, SEAM_ENERGY, s);
 }
 
+int hooks_on_energy_in(Hooks *h, EnergyHook fn, void *state)
+{
+    Subscriber s = {.fn.energy = fn, .state = state};
+    return subscribe(h, SEAM_ENERGY_IN, s);
+}
+
 int hooks_run_report(const struct Sim *sim, FILE *f)
 {
     const SeamList *l = &sim->hooks.seam[SEAM_REPORT];

@@ -48,6 +48,9 @@ typedef enum Seam {
     SEAM_REPORT,         /**< end of a run: print a summary (stdout) */
     SEAM_CHECKPOINT,     /**< save or restore state a restart needs */
     SEAM_ENERGY,         /**< energy a stage has taken out of the run */
+    SEAM_ENERGY_IN,      /**< energy put into the run so far (the start's
+                              and the work of gravity and loads), where a
+                              stage counts it: the energy guard's measure */
     SEAM_COUNT           /**< number of seams */
 } Seam;
 
@@ -100,7 +103,7 @@ typedef struct Subscriber {
         HistoryHook history;   /**< SEAM_HISTORY */
         ReportHook report;     /**< SEAM_REPORT */
         CheckpointHook checkpoint; /**< SEAM_CHECKPOINT */
-        EnergyHook energy;     /**< SEAM_ENERGY */
+        EnergyHook energy;     /**< SEAM_ENERGY, SEAM_ENERGY_IN */
     } fn;                      /**< the function */
     void *state;               /**< passed back to it */
     int rank;                  /**< stage order of its installer */
@@ -282,6 +285,10 @@ int hooks_on_checkpoint(Hooks *h, CheckpointHook fn, void *state);
 
 /** @brief Subscribe to SEAM_ENERGY. @return 0 or -1. */
 int hooks_on_energy(Hooks *h, EnergyHook fn, void *state);
+
+/** @brief Subscribe to SEAM_ENERGY_IN (one subscriber: the first counts).
+ *  @return 0 or -1. */
+int hooks_on_energy_in(Hooks *h, EnergyHook fn, void *state);
 /** @brief Print the end-of-run lines of every SEAM_REPORT subscriber to
  *         @p f. @return 0, or -1 when a write failed. */
 int hooks_run_report(const struct Sim *sim, FILE *f);

@@ -10,6 +10,20 @@
 
 #include "step.h"
 
+static int moving_holds(const Scene *sc);
+
+/// [energy_balance_in]
+/** SEAM_ENERGY_IN: the energy put in so far, the start's and the work of
+ *  gravity and loads (for the energy guard, energy_guard.h). */
+static double energy_balance_in(const Sim *sim, void *state, const char **name)
+{
+    (void)sim;
+    const EnergyBalance *B = state;
+    *name = "energy in";
+    return B->e0 + B->w_ext;
+}
+/// [energy_balance_in]
+
 static void energy_balance_release(void *state)
 {
     EnergyBalance *B = state;
@@ -53,6 +67,11 @@ int energy_balance_prepare(Sim *sim, void *state, char *err, size_t errlen)
         }
         memcpy(B->x, sim->pts.x, (size_t)n * sizeof(double));
         memcpy(B->y, sim->pts.y, (size_t)n * sizeof(double));
+    }
+    if (per_step && !moving_holds(sc) &&       /* the energy guard's measure */
+        hooks_on_energy_in(&sim->hooks, energy_balance_in, B)) {
+        snprintf(err, errlen, "%s: too many energy hooks", sc->file);
+        return -1;
     }
     if (hooks_on_report(&sim->hooks, energy_balance_report, B) ||
         hooks_on_checkpoint(&sim->hooks, energy_balance_checkpoint, B)) {

@@ -339,6 +339,24 @@ static void energy_guard_stops_first(void **state)
     assert_int_equal(system(args), 0);
 }
 
+/** Where gravity works and nothing counts its work (stage 1 has no energy
+ *  account), the guard has nothing to compare with: off by default (the
+ *  run ends), and run.energy_limit given is refused with file and line. */
+static void energy_guard_needs_the_work_counted(void **state)
+{
+    (void)state;
+    char out[4096];
+    const char *args = "tests/1-mpm/scenes/disks.cfg -q -o build/test-guard-gravity "
+                       "run.time=0.1 run.snapshots=0 run.gravity=[0.0,-1.0]";
+    tk_run_mpm_ok(args, out, sizeof out);
+    char more[512];
+    snprintf(more, sizeof more, "%s run.energy_limit=3", args);
+    assert_int_equal(tk_run_mpm(more, out, sizeof out), 1);
+    print_message("mpm said: %s", out);
+    assert_non_null(strstr(out, "energy_limit: 3: gravity does work on this "
+                                "scene that this run does not count"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -349,6 +367,7 @@ int main(void)
         cmocka_unit_test(program_exit_status),
         cmocka_unit_test(overflowing_totals_stop_the_run),
         cmocka_unit_test(energy_guard_stops_first),
+        cmocka_unit_test(energy_guard_needs_the_work_counted),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
