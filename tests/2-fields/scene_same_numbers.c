@@ -13,7 +13,11 @@
  * too), cracks that split nodes. Each run is short (a few dozen steps) with
  * two snapshots; stdout (less its timing line and stage 5's energy report,
  * a line a later stage adds), stderr, the exit status and
- * every output file must be the same, byte for byte.
+ * every output file must be the same, byte for byte. The energy guard is
+ * off (run.energy_limit = 0): from stage 5 on it counts the work of
+ * gravity and loads, so it stops a run that blows up on such a scene
+ * sooner than stages 1-4 do (tests/5-usavg/scene_energy_guard.c); with it
+ * off, the steps are compared up to the point check's stop.
  * (tools/same_numbers.sh does the same against another commit's build.)
  *
  * The earlier stage's outputs are the same whichever stage's test asks for
@@ -124,12 +128,17 @@ static const char *const schemes[] = {"usl", "musl", "usf"};
 /** Run @p bin on case @p c with @p scheme into @p dir (stdout, stderr and
  *  the exit status kept as files there, the timing line and the stage
  *  number removed). */
+/** What every run sets besides scheme and time; a part of the cache's
+ *  names, so that a copy made with other settings is not taken. */
+#define RUN_SETTINGS "run.snapshots=2 run.threads=1 run.energy_limit=0"
+#define RUN_TAG "s2-t1-g0"
+
 static void run_case(const char *bin, const SameCase *c, const char *scheme,
                      const char *dir)
 {
     char cmd[2048];
     snprintf(cmd, sizeof cmd, "rm -rf %s && mkdir -p %s && %s %s -q -o %s/out "
-             "run.update=%s run.time=%s run.snapshots=2 run.threads=1 >%s/stdout 2>%s/stderr; "
+             "run.update=%s run.time=%s " RUN_SETTINGS " >%s/stdout 2>%s/stderr; "
              "echo \"exit $?\" >>%s/stderr; sed -i -e '/particle-steps\\/s/d' -e '/^mpm: energy /d' "
              "-e 's/(stage [0-9]*)//' -e 's#%s/##g' %s/stdout %s/stderr", dir, dir, bin, c->scene, dir,
              scheme, c->time, dir, dir, dir, dir, dir, dir);
@@ -157,9 +166,9 @@ static int reference_run(const char *bin, const SameCase *c, const char *scheme,
     for (char *q = scene; *q; q++)
         if (*q == '/')
             *q = '_';
-    snprintf(dir, len, "%s/same-numbers-cache/%s-%lu-%lld-%lld.%09ld/%s-%s-%s", real, stage,
-             (unsigned long)st.st_ino, (long long)st.st_size, (long long)st.st_mtim.tv_sec,
-             st.st_mtim.tv_nsec, scene, c->time, scheme);
+    snprintf(dir, len, "%s/same-numbers-cache/%s-%lu-%lld-%lld.%09ld/%s-%s-%s-" RUN_TAG,
+             real, stage, (unsigned long)st.st_ino, (long long)st.st_size,
+             (long long)st.st_mtim.tv_sec, st.st_mtim.tv_nsec, scene, c->time, scheme);
     free(real);
     struct stat there;
     if (stat(dir, &there) == 0)
