@@ -16,9 +16,9 @@ int energy_guard_open(const Scene *sc, char *why, size_t len)
             snprintf(why, len, "moving boundary %d", b);
             return 2;
         }
-    for (int h = 0; h < sc->nheld; h++) {
-        const Hold *H = &sc->held[h].hold;
-        if (H->vx != 0.0 || H->vy != 0.0) {     /* a table's largest */
+    for (int h = 0; h < sc->nheld; h++) {      /* a table counts as moving, */
+        const Hold *H = &sc->held[h].hold;      /* as in stage 5's account */
+        if (H->vx != 0.0 || H->vy != 0.0 || H->nrows > 0) {
             snprintf(why, len, "point_velocities %d", h);
             return 2;
         }
