@@ -9,20 +9,24 @@
 
 #include "step.h"
 
+int energy_guard_moving(const Scene *sc, char *first, size_t len)
+{
+    int n = 0;
+    for (int b = 0; b < sc->nbc; b++)
+        if (sc->bc[b].moving && n++ == 0 && first)
+            snprintf(first, len, "moving boundary %d", b);
+    for (int h = 0; h < sc->nheld; h++) {
+        const Hold *H = &sc->held[h].hold;      /* a table counts as moving */
+        if ((H->vx != 0.0 || H->vy != 0.0 || H->nrows > 0) && n++ == 0 && first)
+            snprintf(first, len, "point_velocities %d", h);
+    }
+    return n;
+}
+
 int energy_guard_open(const Scene *sc, char *why, size_t len)
 {
-    for (int b = 0; b < sc->nbc; b++)
-        if (sc->bc[b].moving) {
-            snprintf(why, len, "moving boundary %d", b);
-            return 2;
-        }
-    for (int h = 0; h < sc->nheld; h++) {      /* a table counts as moving, */
-        const Hold *H = &sc->held[h].hold;      /* as in stage 5's account */
-        if (H->vx != 0.0 || H->vy != 0.0 || H->nrows > 0) {
-            snprintf(why, len, "point_velocities %d", h);
-            return 2;
-        }
-    }
+    if (energy_guard_moving(sc, why, len))
+        return 2;
     if (sc->run.gx != 0.0 || sc->run.gy != 0.0) {
         snprintf(why, len, "gravity");
         return 1;

@@ -32,6 +32,14 @@ typedef struct EnergyGuard {
 } EnergyGuard;
 
 /**
+ * @brief Moving boundaries and held point sets that move (a velocity or a
+ *        table): their reactions do work that no stage counts. The first
+ *        is named into @p first (NULL: not asked).
+ * @return how many.
+ */
+int energy_guard_moving(const Scene *sc, char *first, size_t len);
+
+/**
  * @brief What does work on the scene (gravity, a load, a moving boundary,
  *        held points moving), named into @p why.
  * @return 0 (closed), 1 (gravity or a load: work a stage may count) or

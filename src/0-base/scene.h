@@ -126,9 +126,9 @@ typedef struct RunSettings {
     const struct Method *method; /**< how a step is taken (run.method) */
     int snapshots;      /**< number of particle/grid snapshots after t = 0 */
     int history_every;  /**< steps between history rows (0 = automatic) */
-    double energy_limit; /**< a closed scene whose energy passes this many
-                              times its start stops as unstable (0: never;
-                              energy_guard.h) */
+    double energy_limit; /**< a run whose energy passes this many times
+                              the energy put in stops as unstable (0:
+                              never; energy_guard.h) */
     long checkpoint_every; /**< steps between checkpoints (0: only when a
                                 run stops before its end) */
     const Units *units; /**< the scene's unit system (run.units) */

@@ -497,8 +497,8 @@ static int read_run(Sim *sim, SceneReader *r, const config_setting_t *root)
     if (!(run->energy_limit == 0 || (run->energy_limit > 1 && isfinite(run->energy_limit))))
         return scene_error(r, config_setting_get_member(g, "energy_limit"),
                            "energy_limit", "%g: expected a finite factor above 1 "
-                           "(stop a closed scene whose energy passes that many "
-                           "times its start; default %g) or 0 (never)",
+                           "(stop a run whose energy passes that many times the "
+                           "energy put in; default %g) or 0 (never)",
                            run->energy_limit, ENERGY_LIMIT_DEFAULT);
     if (snaps < 0 || snaps != floor(snaps) || snaps > 100000)
         return scene_error(r, config_setting_get_member(g, "snapshots"), "snapshots",

@@ -3,14 +3,13 @@
  * @brief Energy in = energy stored + dissipated + error, per run.
  */
 #include "checkpoint.h"
+#include "energy_guard.h"
 #include "energy_balance.h"
 
 #include <stdlib.h>
 #include <string.h>
 
 #include "step.h"
-
-static int moving_holds(const Scene *sc);
 
 /// [energy_balance_in]
 /** SEAM_ENERGY_IN: the energy put in so far, the start's and the work of
@@ -68,7 +67,7 @@ int energy_balance_prepare(Sim *sim, void *state, char *err, size_t errlen)
         memcpy(B->x, sim->pts.x, (size_t)n * sizeof(double));
         memcpy(B->y, sim->pts.y, (size_t)n * sizeof(double));
     }
-    if (per_step && !moving_holds(sc) &&       /* the energy guard's measure */
+    if (per_step && !energy_guard_moving(sc, NULL, 0) &&       /* the energy guard's measure */
         hooks_on_energy_in(&sim->hooks, energy_balance_in, B)) {
         snprintf(err, errlen, "%s: too many energy hooks", sc->file);
         return -1;
@@ -167,26 +166,12 @@ double energy_seam_dissipated(const Sim *sim)
     return d;
 }
 
-/** Moving boundaries and moving held points: their reactions do work
- *  that this account does not count. */
-static int moving_holds(const Scene *sc)
-{
-    int n = 0;
-    for (int b = 0; b < sc->nbc; b++)
-        n += sc->bc[b].moving != 0;
-    for (int h = 0; h < sc->nheld; h++) {
-        const Hold *H = &sc->held[h].hold;
-        n += H->vx != 0.0 || H->vy != 0.0 || H->nrows > 0;
-    }
-    return n;
-}
-
 /// [energy_balance_report]
 int energy_balance_report(const Sim *sim, void *state, FILE *f)
 {
     const EnergyBalance *B = state;
     EnergyTerms e = energy_balance_terms(sim, B);
-    return energy_terms_print(sim, &e, B->e0, moving_holds(&sim->scene), f);
+    return energy_terms_print(sim, &e, B->e0, energy_guard_moving(&sim->scene, NULL, 0), f);
 }
 
 int energy_terms_print(const Sim *sim, const EnergyTerms *e, double e0,
