@@ -76,19 +76,32 @@ void grid_free(Grid *g)
     memset(g, 0, sizeof *g);
 }
 
+/** Zero block @p b of @p nb (blocks of @p block slots) of each array. */
+static void zero_block(const Grid *g, double *const *arrays, int narrays, int block,
+                       int nb, int b)
+{
+    size_t lo = (size_t)b * block;
+    size_t len = (size_t)(b == nb - 1 ? g->nslots - (int)lo : block) * sizeof(double);
+    for (int k = 0; k < narrays; k++)
+        memset(arrays[k] + lo, 0, len);
+}
+
 /// [grid_zero]
 void grid_zero(const Grid *g, double *const *arrays, int narrays, int threads)
 {
     const int block = 4096;             /* slots: 32 kB of each array */
-    int n = g->nslots, nb = (n + block - 1) / block;
-    /* blocks in a fixed order per thread; zeros, so no bits depend on it */
-#pragma omp parallel for num_threads(threads) schedule(static) if (nb > 1)
-    for (int b = 0; b < nb; b++) {
-        size_t lo = (size_t)b * block;
-        size_t len = (size_t)(b == nb - 1 ? n - (int)lo : block) * sizeof(double);
-        for (int k = 0; k < narrays; k++)
-            memset(arrays[k] + lo, 0, len);
+    int nb = (g->nslots + block - 1) / block;
+    if (nb <= 1 || threads == 1) {
+        /* no region: one of a size other than the step's makes libgomp
+           free the team it keeps and allocate another */
+        for (int b = 0; b < nb; b++)
+            zero_block(g, arrays, narrays, block, nb, b);
+        return;
     }
+    /* blocks in a fixed order per thread; zeros, so no bits depend on it */
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (int b = 0; b < nb; b++)
+        zero_block(g, arrays, narrays, block, nb, b);
 }
 /// [grid_zero]
 

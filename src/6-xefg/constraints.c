@@ -91,13 +91,16 @@ static int factor(Xefg *x, Constraints *c)
             double s = 0.0;
             for (int e = G->start[b]; e < G->start[b + 1]; e++)
                 s += w[G->dof[e]] * G->N[e];
-            c->S[(size_t)a * n + (size_t)b] = s;
+            c->S[(size_t)b * n + (size_t)a] = s;     /* column-major */
         }
         for (int e = G->start[a]; e < G->start[a + 1]; e++)
             w[G->dof[e]] = 0.0;
     }
     free(w);
-    return LAPACKE_dpotrf(LAPACK_ROW_MAJOR, 'L', c->n, c->S, c->n) ? -1 : 0;
+    /* the lower factor, column-major, as xefg_constraints_apply() solves
+       with it: the _work calls allocate nothing (LAPACKE_dpotrs with
+       LAPACK_ROW_MAJOR allocated a transposed copy at every step) */
+    return LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'L', c->n, c->S, c->n) ? -1 : 0;
 }
 
 int xefg_constraints_build(Xefg *x, const Sim *sim, const CellList *cl,
@@ -159,7 +162,7 @@ void xefg_constraints_apply(Xefg *x, double t)
                 s += G->N[e] * x->v[2 * G->dof[e] + k];
             c->r[a] = s - v[k];
         }
-        LAPACKE_dpotrs(LAPACK_ROW_MAJOR, 'L', c->n, 1, c->S, c->n, c->r, 1);
+        LAPACKE_dpotrs_work(LAPACK_COL_MAJOR, 'L', c->n, 1, c->S, c->n, c->r, c->n);
         if (x->coh)          /* the work of the held places (a cohesive */
             for (int a = 0; a < c->n; a++) {  /* crack's energy balance): */
                 double v[2];                  /* impulse -lambda times the */

@@ -72,15 +72,21 @@ static int constraints_update(Xefg *x, Growth *g, int c, char *err,
             for (int e = G->start[a]; e < G->start[a + 1]; e++)
                 w[G->dof[e]] = 0.0;
         }
-        /* the symmetric S read column-major, its upper factor U is the
-         * row-major lower factor L = U^T that constraints_apply() solves
-         * with; the _work call allocates nothing */
+        /* the symmetric S read column-major: its upper factor U, then
+         * turned over into L = U^T column-major, the form that
+         * xefg_constraints_apply() solves with */
         if (LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'U', C->n, C->S, C->n)) {
             snprintf(err, errlen, "growth of crack %d stopped: the places held "
                      "along %c give dependent constraints with the new "
                      "parameters", c, "xy"[k]);
             return -1;
         }
+        for (size_t i = 0; i < n; i++)
+            for (size_t j = i + 1; j < n; j++) {
+                double u = C->S[i * n + j];
+                C->S[i * n + j] = C->S[j * n + i];
+                C->S[j * n + i] = u;
+            }
     }
     return 0;
 }

@@ -54,7 +54,8 @@ typedef struct Constraints {
     int *node;      /**< the node each holds */
     const Hold **hold; /**< the scene's hold of each */
     ShapeRows rows; /**< G: the shape functions at each place */
-    double *S;      /**< G M^-1 G^T, factored (Cholesky, n x n) */
+    double *S;      /**< G M^-1 G^T, factored: its lower Cholesky factor,
+                         column-major (n x n) */
     double *r;      /**< scratch: residual and multipliers (n) */
 } Constraints;
 
