@@ -6,6 +6,7 @@
 #
 #   make stage1 ... stage8   one solver per chapter
 #   make check               every stage's tests, sanitizer builds, exercises
+#                            (and no global mutable state in the objects)
 #   make docs                the book (Doxygen, warnings are errors)
 #   make figures | figN      the paper's figures, full size (build/figures/figN.png,
 #                            redrawn when a file it reads changes; REDRAW=1
@@ -239,6 +240,7 @@ check: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) check-build
 	@$(MAKE) -n --no-print-directory $(RESOLVED) >/dev/null || \
 	    { echo "make check: make -n $(RESOLVED) fails: a target names a file no rule makes"; exit 1; }
+	@bash tools/check_globals.sh $(OBJ_release_$(LAST))    # no global mutable state
 	@rm -rf build/same-numbers-cache     # scene_same_numbers' copies: this run's own
 	@JOBS=$(JOBS) bash tools/run_tests.sh $(foreach s,$(STAGES),"stage$(s):build/stage$(s)/mpm:$(TESTS_release_$(s))" "asan-stage$(s):build/asan/stage$(s)/mpm:$(TESTS_asan_$(s))") \
 	    "fuzz replay::$(REPLAY)" \
