@@ -38,6 +38,8 @@
 #   - a figure wider than MAX_IMG px (default 640) with neither a width nor
 #     a linked stylesheet that caps images at max-width: 100%;
 #   - a symlink under html/ (the book must work when moved or copied);
+#   - a control character in chapters/*.md (a script's "\ref" or "\f$"
+#     written as CR or form feed);
 #   - any line in doxygen's warnings (its stderr, which make docs keeps).
 # Usage: bash tools/check_html.sh [html dir] [warning log] [chapters dir]
 set -u
@@ -59,6 +61,12 @@ if [ -s "$LOG" ]; then
 fi
 
 find "$HTML" -type l | while read -r l; do bad "symlink $l"; done
+
+# control characters in the chapters' source: a \r, \f, \b or \v that a
+# script's string escape made of \ref, \f$, \begin, \vec (a CR read back
+# in text mode turns into a line break, and the command into plain text)
+grep -n -P '[\x00-\x08\x0b-\x1f\x7f]' "$CHAPTERS"/*.md 2>/dev/null | cut -c1-150 |
+    while IFS= read -r l; do bad "control character in a chapter's source: $l"; done
 
 # raw table rows
 grep -n -E '<p[^>]*>[[:space:]]*\|' "$HTML"/*.html | cut -c1-150 |
