@@ -72,19 +72,11 @@ static int collect(Xefg *x, const Sim *sim, int k)
     return 0;
 }
 
-/** S = G M^-1 G^T of direction @p k, then its Cholesky factor. */
-static int factor(Xefg *x, Constraints *c)
+int xefg_constraints_factor(const Xefg *x, Constraints *c, double *w)
 {
     size_t n = (size_t)c->n;
-    double *w = calloc((size_t)x->ndof, sizeof(double));
-    c->S = malloc(sizeof(double) * n * n);
-    c->r = malloc(sizeof(double) * n);
-    if (!w || !c->S || !c->r) {
-        free(w);
-        return -2;
-    }
     const ShapeRows *G = &c->rows;
-    for (int a = 0; a < c->n; a++) {
+    for (int a = 0; a < c->n; a++) {         /* w: M^-1 G^T, a row at a time */
         for (int e = G->start[a]; e < G->start[a + 1]; e++)
             w[G->dof[e]] = G->N[e] / x->mass[G->dof[e]];
         for (int b = 0; b < c->n; b++) {
@@ -96,11 +88,27 @@ static int factor(Xefg *x, Constraints *c)
         for (int e = G->start[a]; e < G->start[a + 1]; e++)
             w[G->dof[e]] = 0.0;
     }
-    free(w);
     /* the lower factor, column-major, as xefg_constraints_apply() solves
        with it: the _work calls allocate nothing (LAPACKE_dpotrs with
        LAPACK_ROW_MAJOR allocated a transposed copy at every step) */
     return LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'L', c->n, c->S, c->n) ? -1 : 0;
+}
+
+/** Room for S and r of direction @p k, then S and its factor. @return 0,
+ *  -1 (not positive definite) or -2 (out of memory). */
+static int factor(Xefg *x, Constraints *c)
+{
+    size_t n = (size_t)c->n;
+    double *w = calloc((size_t)x->ndof, sizeof(double));
+    c->S = malloc(sizeof(double) * n * n);
+    c->r = malloc(sizeof(double) * n);
+    if (!w || !c->S || !c->r) {
+        free(w);
+        return -2;
+    }
+    int rc = xefg_constraints_factor(x, c, w);
+    free(w);
+    return rc;
 }
 
 int xefg_constraints_build(Xefg *x, const Sim *sim, const CellList *cl,

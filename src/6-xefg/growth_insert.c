@@ -5,7 +5,6 @@
  *        growth_rows.c, growth_cohesive.c), the held places whose rows
  *        gained parameters, and the stable step.
  */
-#include <lapacke.h>
 #include <math.h>
 #include <string.h>
 
@@ -55,38 +54,15 @@ static int constraints_update(Xefg *x, Growth *g, int c, char *err,
         }
         for (int j = 0; j < C->n; j++)
             growth_copy_row(&C->rows, j, A, C->node[j]);
-        size_t n = (size_t)C->n;
-        const ShapeRows *G = &C->rows;
-        double *w = g->diag;                    /* M^-1 G^T, a row at a time */
+        double *w = g->diag;                    /* scratch, zero on entry */
         for (int q = 0; q < x->ndof; q++)
             w[q] = 0.0;
-        for (int a = 0; a < C->n; a++) {
-            for (int e = G->start[a]; e < G->start[a + 1]; e++)
-                w[G->dof[e]] = G->N[e] / x->mass[G->dof[e]];
-            for (int b = 0; b < C->n; b++) {
-                double sum = 0.0;
-                for (int e = G->start[b]; e < G->start[b + 1]; e++)
-                    sum += w[G->dof[e]] * G->N[e];
-                C->S[(size_t)a * n + (size_t)b] = sum;
-            }
-            for (int e = G->start[a]; e < G->start[a + 1]; e++)
-                w[G->dof[e]] = 0.0;
-        }
-        /* the symmetric S read column-major: its upper factor U, then
-         * turned over into L = U^T column-major, the form that
-         * xefg_constraints_apply() solves with */
-        if (LAPACKE_dpotrf_work(LAPACK_COL_MAJOR, 'U', C->n, C->S, C->n)) {
+        if (xefg_constraints_factor(x, C, w)) {
             snprintf(err, errlen, "growth of crack %d stopped: the places held "
                      "along %c give dependent constraints with the new "
                      "parameters", c, "xy"[k]);
             return -1;
         }
-        for (size_t i = 0; i < n; i++)
-            for (size_t j = i + 1; j < n; j++) {
-                double u = C->S[i * n + j];
-                C->S[i * n + j] = C->S[j * n + i];
-                C->S[j * n + i] = u;
-            }
     }
     return 0;
 }

@@ -195,6 +195,13 @@ int xefg_power_iteration_in(Xefg *x, const Sim *sim, double *z, double *kz,
 int xefg_constraints_build(Xefg *x, const Sim *sim, const CellList *cl,
                            const int *body_of, char *err, size_t errlen);
 
+/** @brief S = G M^-1 G^T of @p c (column-major) and its lower Cholesky
+ *         factor in place, as xefg_constraints_apply() solves with it; at
+ *         set-up and after a growth event. @p w: x->ndof doubles of
+ *         scratch, zero on entry and on return. @return 0, or -1 when S
+ *         is not positive definite (dependent constraints). */
+int xefg_constraints_factor(const Xefg *x, Constraints *c, double *w);
+
 /** @brief Project the velocities onto the constraints at time @p t:
  *         v -= M^-1 G^T (G M^-1 G^T)^-1 (G v - vbar). */
 void xefg_constraints_apply(Xefg *x, double t);

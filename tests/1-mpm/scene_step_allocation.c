@@ -7,9 +7,11 @@
  * malloc(), calloc(), realloc(), free() and the aligned forms for the whole
  * process (glibc lets a program define them: "Replacing malloc" in its
  * manual), forwards each to glibc's own (__libc_malloc(), ...), and counts
- * the calls made while sim_advance() runs, by who made them: the program
- * (this executable: our code, cmocka, libconfig are linked into it or
- * called from it) or libgomp (the OpenMP runtime).
+ * the allocating calls made while sim_advance() runs (free() is not
+ * counted: it releases what a counted call allocated, and as a tail call
+ * it would be charged to the wrong caller), by who made them: libgomp (the
+ * OpenMP runtime: the caller's address lies in it) or the program (any
+ * other caller: our code, and the libraries it calls, such as LAPACKE).
  *
  * Each scene is loaded, stepped WARM steps (a growing list may reach its
  * size there: the first steps of a contact or a crack), and then counted
